@@ -1,0 +1,105 @@
+#include "casteljau/curve/arc.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace casteljau {
+
+namespace {
+
+// Signed angle from u to v in (-pi, pi].
+double angle_between(Vec2 u, Vec2 v) { return std::atan2(u.cross(v), u.dot(v)); }
+
+int piece_count(double dtheta) {
+    // 1e-9 keeps an exact 90-degree arc in one piece despite rounding.
+    const double quarters = std::fabs(dtheta) / (0.5 * std::numbers::pi) - 1e-9;
+    return std::clamp(int(std::ceil(quarters)), 1, 4);
+}
+
+} // namespace
+
+Affine EllipseArc::unit_circle_map() const {
+    return Affine::translate(center.to_vec()) * Affine::rotate(x_rotation) *
+           Affine::scale(radii.x, radii.y);
+}
+
+EllipseArc svg_arc(const SvgArcInput& in) {
+    EllipseArc arc;
+    if (in.from == in.to) {
+        arc.kind = EllipseArc::Kind::Nothing;
+        return arc;
+    }
+    double rx = std::fabs(in.radii.x), ry = std::fabs(in.radii.y);
+    if (rx == 0.0 || ry == 0.0) {
+        arc.kind = EllipseArc::Kind::Line;
+        return arc;
+    }
+    const double phi = degrees_to_radians(std::fmod(in.x_rotation_deg, 360.0));
+    const double cs = std::cos(phi), sn = std::sin(phi);
+    // F.6.5 step 1: the midpoint-relative start point in the ellipse's frame.
+    const Vec2 h = (in.from - in.to) * 0.5;
+    const Vec2 p{cs * h.x + sn * h.y, -sn * h.x + cs * h.y};
+    // F.6.6: scale the radii up until the ellipse reaches both end points.
+    const double lambda = (p.x * p.x) / (rx * rx) + (p.y * p.y) / (ry * ry);
+    if (lambda > 1.0) {
+        const double s = std::sqrt(lambda);
+        rx *= s;
+        ry *= s;
+    }
+    // F.6.5 step 2: the centre in that frame. The radicand is >= 0 after the
+    // correction up to rounding, which the clamp absorbs.
+    const double rx2 = rx * rx, ry2 = ry * ry;
+    const double den = rx2 * p.y * p.y + ry2 * p.x * p.x;
+    double coef = std::sqrt(std::max(0.0, (rx2 * ry2 - den) / den));
+    if (in.large_arc == in.sweep) coef = -coef;
+    const Vec2 c{coef * rx * p.y / ry, -coef * ry * p.x / rx};
+    // Step 3: back to user space.
+    const Point mid = lerp(in.from, in.to, 0.5);
+    arc.center = mid + Vec2{cs * c.x - sn * c.y, sn * c.x + cs * c.y};
+    // Step 4: start angle and sweep.
+    const Vec2 u{(p.x - c.x) / rx, (p.y - c.y) / ry}, v{(-p.x - c.x) / rx, (-p.y - c.y) / ry};
+    arc.theta1 = angle_between({1, 0}, u);
+    double dtheta = angle_between(u, v);
+    if (!in.sweep && dtheta > 0) dtheta -= 2 * std::numbers::pi;
+    if (in.sweep && dtheta < 0) dtheta += 2 * std::numbers::pi;
+    arc.dtheta = dtheta;
+    arc.radii = {rx, ry};
+    arc.x_rotation = phi;
+    return arc;
+}
+
+int svg_arc_to_conics(const SvgArcInput& in, std::array<Conic, 4>& out) {
+    const EllipseArc arc = svg_arc(in);
+    if (arc.kind != EllipseArc::Kind::Arc) return 0;
+    const int n = piece_count(arc.dtheta);
+    const Affine m = arc.unit_circle_map();
+    const double step = arc.dtheta / n;
+    for (int i = 0; i < n; ++i) {
+        const double a0 = arc.theta1 + step * i, a1 = a0 + step;
+        out[i] = Conic::circular_arc({0, 0}, 1.0, a0, a1).transformed(m);
+    }
+    out[0].p0 = in.from;
+    out[n - 1].p2 = in.to;
+    return n;
+}
+
+int svg_arc_to_cubics(const SvgArcInput& in, std::array<CubicBez, 4>& out) {
+    const EllipseArc arc = svg_arc(in);
+    if (arc.kind != EllipseArc::Kind::Arc) return 0;
+    const int n = piece_count(arc.dtheta);
+    const Affine m = arc.unit_circle_map();
+    const double step = arc.dtheta / n;
+    const double k = 4.0 / 3.0 * std::tan(step / 4.0);
+    for (int i = 0; i < n; ++i) {
+        const double a0 = arc.theta1 + step * i, a1 = a0 + step;
+        const Point s{std::cos(a0), std::sin(a0)}, e{std::cos(a1), std::sin(a1)};
+        const CubicBez unit{{s, s + Vec2{-s.y, s.x} * k, e - Vec2{-e.y, e.x} * k, e}};
+        out[i] = unit.transformed(m);
+    }
+    out[0].p[0] = in.from;
+    out[n - 1].p[3] = in.to;
+    return n;
+}
+
+} // namespace casteljau

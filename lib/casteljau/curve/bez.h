@@ -1,0 +1,121 @@
+// Bez<N>: a Bezier curve of fixed degree N, with the usual names
+// Line = Bez<1>, QuadBez = Bez<2>, CubicBez = Bez<3>.
+//
+// B(t) = sum_{i=0}^{N} C(N,i) t^i (1-t)^(N-i) p[i],  t in [0, 1].
+// Invariants used throughout: B(0) = p[0] and B(1) = p[N] exactly (lerp is
+// exact at the ends); B([0,1]) lies in the convex hull of p; B commutes with
+// affine maps (transform the control points, not the samples).
+//
+// Three evaluations are kept because each is the reference for another:
+// de Casteljau (`eval`, stable, the one everything else uses), the Bernstein
+// sum (`eval_bernstein`) and the power basis (`power()`, cheapest per sample
+// once the coefficients exist: what uniform sampling wants).
+#pragma once
+
+#include "casteljau/curve/decasteljau.h"
+#include "casteljau/curve/roots.h"
+#include "casteljau/geom/affine.h"
+#include "casteljau/geom/rect.h"
+
+#include <array>
+#include <span>
+
+namespace casteljau {
+
+// c0 + c[0] t + c[1] t^2 + ... : a curve in the power (monomial) basis.
+template <int N>
+struct PowerCurve {
+    Point c0;
+    std::array<Vec2, N> c;
+    constexpr Point eval(double t) const { return horner_eval(c0, c, t); }
+};
+
+template <int N>
+struct Bez {
+    static_assert(N >= 1 && N <= 3, "fixed-degree curves are lines, quadratics and cubics");
+    static constexpr int degree = N;
+    std::array<Point, N + 1> p;
+
+    constexpr Point start() const { return p[0]; }
+    constexpr Point end() const { return p[N]; }
+
+    constexpr Point eval(double t) const { return decasteljau_eval(points(), t); }
+    constexpr Point eval_bernstein(double t) const { return bernstein_eval(points(), t); }
+    constexpr PowerCurve<N> power() const {
+        PowerCurve<N> pc{};
+        pc.c0 = power_coefficients(points(), pc.c);
+        return pc;
+    }
+
+    // Control vectors of the derivative curve B'(t), a Bezier of degree N - 1.
+    constexpr std::array<Vec2, N> hodograph() const {
+        std::array<Vec2, N> h{};
+        casteljau::hodograph(points(), h);
+        return h;
+    }
+    constexpr Vec2 deriv(double t) const {
+        const auto h = hodograph();
+        return decasteljau_eval(std::span<const Vec2, N>(h), t);
+    }
+    constexpr Vec2 deriv2(double t) const {
+        if constexpr (N == 1) {
+            return {};
+        } else {
+            const auto h = hodograph();
+            std::array<Vec2, N - 1> h2{};
+            for (int i = 0; i < N - 1; ++i) h2[i] = (h[i + 1] - h[i]) * double(N - 1);
+            return decasteljau_eval(std::span<const Vec2, N - 1>(h2), t);
+        }
+    }
+
+    constexpr std::array<Bez, 2> split(double t) const {
+        std::array<Bez, 2> halves{};
+        decasteljau_split(points(), t, std::span<Point, N + 1>(halves[0].p),
+                          std::span<Point, N + 1>(halves[1].p));
+        return halves;
+    }
+    constexpr Bez subsegment(double t0, double t1) const {
+        Bez s{};
+        decasteljau_subsegment(points(), t0, t1, std::span<Point, N + 1>(s.p));
+        return s;
+    }
+    constexpr Bez<N + 1> elevate() const
+        requires(N < 3)
+    {
+        Bez<N + 1> e{};
+        elevate_degree(points(), e.p);
+        return e;
+    }
+    constexpr Bez transformed(const Affine& m) const {
+        Bez r{};
+        for (int i = 0; i <= N; ++i) r.p[i] = m * p[i];
+        return r;
+    }
+    constexpr Rect control_bounds() const {
+        Rect r = Rect::empty();
+        for (Point q : p) r = r.united(q);
+        return r;
+    }
+    // Tight box: the end points plus the curve at every root of x'(t) and y'(t).
+    Rect bounds() const {
+        Rect r = Rect::from_points(p[0], p[N]);
+        const auto h = hodograph();
+        std::array<double, N> cx{}, cy{};
+        for (int i = 0; i < N; ++i) cx[i] = h[i].x, cy[i] = h[i].y;
+        std::array<double, N> roots{};
+        for (const auto* c : {&cx, &cy}) {
+            const int k = bernstein_roots(*c, roots);
+            for (int i = 0; i < k; ++i) r = r.united(eval(roots[i]));
+        }
+        return r;
+    }
+
+    constexpr std::span<const Point, N + 1> points() const { return p; }
+    constexpr bool operator==(const Bez&) const = default;
+};
+
+using Line = Bez<1>;
+using QuadBez = Bez<2>;
+using CubicBez = Bez<3>;
+
+} // namespace casteljau

@@ -1,0 +1,206 @@
+#include "casteljau/curve/path.h"
+
+#include "casteljau/curve/arc.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace casteljau {
+
+namespace {
+
+template <int N>
+Vec2 bez_tangent(const Bez<N>& b, bool at_start) {
+    // The first nonzero control-polygon leg seen from the end: it is the
+    // direction of the first nonvanishing derivative there.
+    for (int k = 1; k <= N; ++k) {
+        const Vec2 v = at_start ? b.p[k] - b.p[0] : b.p[N] - b.p[N - k];
+        if (v.length_sq() > 0.0) return v;
+    }
+    return {};
+}
+
+Vec2 conic_tangent(const Conic& c, bool at_start) {
+    const Bez<2> q{{c.p0, c.p1, c.p2}}; // same control polygon, same end tangents
+    return bez_tangent(q, at_start);
+}
+
+template <class F>
+auto visit_curve(const Segment& s, F&& f) {
+    return std::visit(std::forward<F>(f), s);
+}
+
+} // namespace
+
+Point segment_start(const Segment& s) {
+    return visit_curve(s, [](const auto& c) { return c.start(); });
+}
+Point segment_end(const Segment& s) {
+    return visit_curve(s, [](const auto& c) { return c.end(); });
+}
+Point segment_eval(const Segment& s, double t) {
+    return visit_curve(s, [t](const auto& c) { return c.eval(t); });
+}
+Vec2 segment_deriv(const Segment& s, double t) {
+    return visit_curve(s, [t](const auto& c) { return c.deriv(t); });
+}
+Vec2 segment_deriv2(const Segment& s, double t) {
+    return visit_curve(s, [t](const auto& c) { return c.deriv2(t); });
+}
+Rect segment_bounds(const Segment& s) {
+    return visit_curve(s, [](const auto& c) { return c.bounds(); });
+}
+Segment segment_transformed(const Segment& s, const Affine& m) {
+    return visit_curve(s, [&m](const auto& c) -> Segment { return c.transformed(m); });
+}
+
+Vec2 segment_start_tangent(const Segment& s) {
+    return visit_curve(s, [](const auto& c) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(c)>, Conic>)
+            return conic_tangent(c, true);
+        else
+            return bez_tangent(c, true);
+    });
+}
+Vec2 segment_end_tangent(const Segment& s) {
+    return visit_curve(s, [](const auto& c) {
+        if constexpr (std::is_same_v<std::decay_t<decltype(c)>, Conic>)
+            return conic_tangent(c, false);
+        else
+            return bez_tangent(c, false);
+    });
+}
+
+const char* to_string(Continuity c) {
+    switch (c) {
+    case Continuity::None: return "none";
+    case Continuity::C0: return "C0";
+    case Continuity::G1: return "G1";
+    case Continuity::C1: return "C1";
+    case Continuity::C2: return "C2";
+    }
+    return "?";
+}
+
+Continuity joint_continuity(const Segment& a, const Segment& b, double tol) {
+    const auto close = [tol](Vec2 d, double scale) {
+        return d.length() <= tol * std::max(1.0, scale);
+    };
+    const Rect box = segment_bounds(a).united(segment_bounds(b));
+    if (!close(segment_start(b) - segment_end(a), std::max(box.width(), box.height())))
+        return Continuity::None;
+    const Vec2 ta = segment_end_tangent(a), tb = segment_start_tangent(b);
+    if (ta.length_sq() == 0.0 || tb.length_sq() == 0.0) return Continuity::C0;
+    // G1: same unit tangent (so also the same direction, not opposite).
+    if (!close(tb / tb.length() - ta / ta.length(), 1.0)) return Continuity::C0;
+    const Vec2 da = segment_deriv(a, 1.0), db = segment_deriv(b, 0.0);
+    if (!close(db - da, da.length())) return Continuity::G1;
+    const Vec2 dda = segment_deriv2(a, 1.0), ddb = segment_deriv2(b, 0.0);
+    if (!close(ddb - dda, dda.length())) return Continuity::C1;
+    return Continuity::C2;
+}
+
+Subpath& Path::open_subpath() {
+    if (!open_) {
+        subpaths_.push_back({current_, {}, false});
+        open_ = true;
+    }
+    return subpaths_.back();
+}
+
+void Path::append(Segment s, Point end) {
+    open_subpath().segments.push_back(s);
+    current_ = end;
+}
+
+void Path::move_to(Point p) {
+    // A lone move_to leaves no trace: an empty subpath would draw nothing.
+    if (open_ && subpaths_.back().segments.empty()) subpaths_.pop_back();
+    subpaths_.push_back({p, {}, false});
+    open_ = true;
+    current_ = p;
+}
+
+void Path::line_to(Point p) {
+    const Point from = current_;
+    append(Line{{from, p}}, p);
+}
+void Path::quad_to(Point c, Point p) {
+    const Point from = current_;
+    append(QuadBez{{from, c, p}}, p);
+}
+void Path::cubic_to(Point c1, Point c2, Point p) {
+    const Point from = current_;
+    append(CubicBez{{from, c1, c2, p}}, p);
+}
+void Path::conic_to(Point c, Point p, double w) {
+    const Point from = current_;
+    append(Conic{from, c, p, w}, p);
+}
+
+void Path::arc_to(Vec2 radii, double x_rotation_deg, bool large_arc, bool sweep, Point p) {
+    const SvgArcInput in{current_, p, radii, x_rotation_deg, large_arc, sweep};
+    const EllipseArc arc = svg_arc(in);
+    if (arc.kind == EllipseArc::Kind::Nothing) return;
+    if (arc.kind == EllipseArc::Kind::Line) return line_to(p);
+    std::array<Conic, 4> pieces;
+    const int n = svg_arc_to_conics(in, pieces);
+    for (int i = 0; i < n; ++i) append(pieces[i], pieces[i].end());
+}
+
+void Path::close() {
+    if (!open_) return;
+    Subpath& s = subpaths_.back();
+    if (s.segments.empty()) {
+        subpaths_.pop_back();
+    } else {
+        if (current_ != s.start) s.segments.push_back(Line{{current_, s.start}});
+        s.closed = true;
+    }
+    current_ = subpaths_.empty() ? current_ : subpaths_.back().start;
+    open_ = false;
+}
+
+std::size_t Path::segment_count() const {
+    std::size_t n = 0;
+    for (const Subpath& s : subpaths_) n += s.segments.size();
+    return n;
+}
+
+void Path::transform(const Affine& m) {
+    for (Subpath& s : subpaths_) {
+        s.start = m * s.start;
+        for (Segment& seg : s.segments) seg = segment_transformed(seg, m);
+    }
+    current_ = m * current_;
+}
+
+Rect Path::bounds() const {
+    Rect r = Rect::empty();
+    for (const Subpath& s : subpaths_) {
+        r = r.united(s.start);
+        for (const Segment& seg : s.segments) r = r.united(segment_bounds(seg));
+    }
+    return r;
+}
+
+Point Path::eval(std::size_t subpath, double u) const {
+    const Subpath& s = subpaths_[subpath];
+    if (s.segments.empty()) return s.start;
+    const double n = double(s.segments.size());
+    u = std::clamp(u, 0.0, n);
+    const std::size_t i = std::min(std::size_t(u), s.segments.size() - 1);
+    return segment_eval(s.segments[i], u - double(i));
+}
+
+std::vector<Continuity> Path::continuity(std::size_t subpath, double tol) const {
+    const Subpath& s = subpaths_[subpath];
+    std::vector<Continuity> out;
+    for (std::size_t i = 0; i + 1 < s.segments.size(); ++i)
+        out.push_back(joint_continuity(s.segments[i], s.segments[i + 1], tol));
+    if (s.closed && !s.segments.empty())
+        out.push_back(joint_continuity(s.segments.back(), s.segments.front(), tol));
+    return out;
+}
+
+} // namespace casteljau

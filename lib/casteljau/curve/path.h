@@ -1,0 +1,91 @@
+// Path: the 2D drawing API. A path is a list of subpaths; a subpath is a start
+// point and a chain of segments (lines, quadratics, cubics, conics), each
+// starting where the previous one ended, optionally closed.
+//
+// Semantics follow SVG and the HTML canvas: a drawing command with no open
+// subpath starts one at the current point (the origin at first, the start of
+// the last closed subpath after close()); close() adds the closing line when
+// the subpath does not already end at its start, so a closed subpath's
+// segments form a loop; arc_to takes SVG arc parameters and appends exact
+// conics.
+//
+// Each subpath has the global parameterisation of a piecewise curve:
+// x(u) = x_i(u - i) for u in [i, i+1], i = 0..segments-1.
+#pragma once
+
+#include "casteljau/curve/bez.h"
+#include "casteljau/curve/conic.h"
+
+#include <cstddef>
+#include <variant>
+#include <vector>
+
+namespace casteljau {
+
+using Segment = std::variant<Line, QuadBez, CubicBez, Conic>;
+
+Point segment_start(const Segment& s);
+Point segment_end(const Segment& s);
+Point segment_eval(const Segment& s, double t);
+Vec2 segment_deriv(const Segment& s, double t);
+Vec2 segment_deriv2(const Segment& s, double t);
+// Direction in which the segment leaves its start / arrives at its end; where
+// the derivative vanishes (coincident control points) the limit direction is
+// used. Zero only for a segment collapsed to a point.
+Vec2 segment_start_tangent(const Segment& s);
+Vec2 segment_end_tangent(const Segment& s);
+Rect segment_bounds(const Segment& s);
+Segment segment_transformed(const Segment& s, const Affine& m);
+
+struct Subpath {
+    Point start;
+    std::vector<Segment> segments;
+    bool closed = false;
+};
+
+// How smoothly one segment joins the next, from weakest to strongest; each
+// level implies the ones before it (G1: same position and unit tangent; C1:
+// same first derivative; C2: same first and second derivatives).
+enum class Continuity { None, C0, G1, C1, C2 };
+const char* to_string(Continuity c);
+
+// Classifies the joint a(1) -> b(0). `tol` is relative to the size of the
+// quantities compared (positions to the segments' extent, derivatives to
+// their own length): a joint is C1 if |a'(1) - b'(0)| <= tol * max(1, |a'(1)|).
+Continuity joint_continuity(const Segment& a, const Segment& b, double tol = 1e-9);
+
+class Path {
+  public:
+    void move_to(Point p);
+    void line_to(Point p);
+    void quad_to(Point c, Point p);
+    void cubic_to(Point c1, Point c2, Point p);
+    void conic_to(Point c, Point p, double w);
+    // SVG elliptical arc from the current point (appendix F.6): exact conics.
+    void arc_to(Vec2 radii, double x_rotation_deg, bool large_arc, bool sweep, Point p);
+    void close();
+
+    Point current_point() const { return current_; }
+    const std::vector<Subpath>& subpaths() const { return subpaths_; }
+    bool empty() const { return subpaths_.empty(); }
+    std::size_t segment_count() const;
+
+    void transform(const Affine& m);
+    Rect bounds() const;
+
+    // The subpath's global parameterisation; u is clamped to [0, segments].
+    Point eval(std::size_t subpath, double u) const;
+    // Continuity of every joint of a subpath: joint i is segment i -> i+1; a
+    // closed subpath has one more, last -> first.
+    std::vector<Continuity> continuity(std::size_t subpath, double tol = 1e-9) const;
+
+  private:
+    Subpath& open_subpath();
+    void append(Segment s, Point end);
+
+    std::vector<Subpath> subpaths_;
+    Point current_{};
+    bool open_ = false; // the last subpath accepts segments
+};
+
+} // namespace casteljau

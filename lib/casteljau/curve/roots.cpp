@@ -1,0 +1,99 @@
+#include "casteljau/curve/roots.h"
+
+#include "casteljau/curve/decasteljau.h"
+
+#include <array>
+#include <cmath>
+
+namespace casteljau {
+
+int solve_quadratic(double a, double b, double c, double roots[2]) noexcept {
+    // |a| this small against b and c means the t^2 term cannot matter for
+    // parameters in a bounded range: treat the equation as linear.
+    const double scale = std::fabs(b) + std::fabs(c);
+    if (std::fabs(a) <= 1e-14 * scale || a == 0.0) {
+        if (b == 0.0) return 0;
+        roots[0] = -c / b;
+        return 1;
+    }
+    const double disc = b * b - 4.0 * a * c;
+    if (disc < 0.0) return 0;
+    if (disc == 0.0) {
+        roots[0] = -b / (2.0 * a);
+        return 1;
+    }
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    double r0 = q / a, r1 = q != 0.0 ? c / q : -r0;
+    if (r0 > r1) std::swap(r0, r1);
+    roots[0] = r0;
+    roots[1] = r1;
+    return 2;
+}
+
+namespace {
+
+// A Bernstein coefficient value, so the generic de Casteljau code can split it.
+struct Scalar {
+    double v = 0;
+};
+constexpr Scalar lerp(Scalar a, Scalar b, double t) { return {(1.0 - t) * a.v + t * b.v}; }
+
+struct Piece {
+    std::array<Scalar, kMaxPoints> c;
+    double t0, t1;
+    int depth;
+};
+
+bool has_sign_change(const Piece& p, std::size_t n) {
+    bool neg = false, pos = false;
+    for (std::size_t i = 0; i < n; ++i) {
+        neg |= p.c[i].v <= 0.0;
+        pos |= p.c[i].v >= 0.0;
+    }
+    return neg && pos;
+}
+
+} // namespace
+
+int bernstein_roots(std::span<const double> coeff, std::span<double> out) noexcept {
+    const std::size_t n = coeff.size();
+    if (n < 2 || out.empty()) return 0;
+    // The zero polynomial "changes sign" everywhere; it has no isolated roots.
+    bool all_zero = true;
+    for (double c : coeff) all_zero &= c == 0.0;
+    if (all_zero) return 0;
+    // Depth-first, right half pushed first, so roots come out ascending; the
+    // stack never holds more than one pending piece per level.
+    std::array<Piece, kRootDepth + 2> stack;
+    int top = 0;
+    stack[0].t0 = 0;
+    stack[0].t1 = 1;
+    stack[0].depth = 0;
+    for (std::size_t i = 0; i < n; ++i) stack[0].c[i].v = coeff[i];
+    top = 1;
+    int count = 0;
+    double last = -1.0;
+    // Near a root of high multiplicity many tiny pieces straddle zero through
+    // rounding; the budget bounds that work whatever the input.
+    int budget = 64 * kRootDepth * int(n);
+    while (top > 0 && count < int(out.size()) && budget-- > 0) {
+        const Piece p = stack[--top];
+        if (!has_sign_change(p, n)) continue;
+        if (p.depth == kRootDepth) {
+            const double t = 0.5 * (p.t0 + p.t1);
+            // Adjacent pieces of the last level can both straddle one root.
+            if (t - last > 4.0 * (p.t1 - p.t0)) out[count++] = last = t;
+            continue;
+        }
+        Piece& right = stack[top++];
+        Piece& left = stack[top++];
+        const double mid = 0.5 * (p.t0 + p.t1);
+        decasteljau_split(std::span<const Scalar>(p.c.data(), n), 0.5,
+                          std::span<Scalar>(left.c.data(), n), std::span<Scalar>(right.c.data(), n));
+        left.t0 = p.t0, left.t1 = mid, left.depth = p.depth + 1;
+        right.t0 = mid, right.t1 = p.t1, right.depth = p.depth + 1;
+    }
+    return count;
+}
+
+} // namespace casteljau

@@ -1,0 +1,59 @@
+// Affine: a 2D affine map in the SVG `matrix(a b c d e f)` convention,
+//   x' = a x + c y + e,   y' = b x + d y + f.
+// Applied to a Point it translates; applied to a Vec2 it does not. Composition
+// reads right to left like the maths: (A * B) * p == A * (B * p).
+#pragma once
+
+#include "casteljau/geom/point.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace casteljau {
+
+struct Affine {
+    double a = 1, b = 0, c = 0, d = 1, e = 0, f = 0;
+
+    static constexpr Affine identity() { return {}; }
+    static constexpr Affine translate(Vec2 v) { return {1, 0, 0, 1, v.x, v.y}; }
+    static constexpr Affine scale(double sx, double sy) { return {sx, 0, 0, sy, 0, 0}; }
+    static constexpr Affine scale(double s) { return scale(s, s); }
+    static Affine rotate(double radians) {
+        const double cs = std::cos(radians), sn = std::sin(radians);
+        return {cs, sn, -sn, cs, 0, 0};
+    }
+    static Affine skew_x(double radians) { return {1, 0, std::tan(radians), 1, 0, 0}; }
+    static Affine skew_y(double radians) { return {1, std::tan(radians), 0, 1, 0, 0}; }
+
+    constexpr Point operator*(Point p) const {
+        return {a * p.x + c * p.y + e, b * p.x + d * p.y + f};
+    }
+    constexpr Vec2 operator*(Vec2 v) const { return {a * v.x + c * v.y, b * v.x + d * v.y}; }
+    constexpr Affine operator*(const Affine& m) const {
+        return {a * m.a + c * m.b,     b * m.a + d * m.b,     a * m.c + c * m.d,
+                b * m.c + d * m.d,     a * m.e + c * m.f + e, b * m.e + d * m.f + f};
+    }
+    constexpr bool operator==(const Affine&) const = default;
+
+    constexpr double determinant() const { return a * d - b * c; }
+    // Precondition: determinant() != 0.
+    constexpr Affine inverse() const {
+        const double inv = 1.0 / determinant();
+        return {d * inv, -b * inv, -c * inv, a * inv, (c * f - d * e) * inv, (b * e - a * f) * inv};
+    }
+    // Largest factor by which the map stretches any vector: the larger singular value.
+    // Used to turn a device-pixel tolerance into a user-space one.
+    double max_scale() const {
+        const double p = a * a + b * b, q = c * c + d * d, r = a * c + b * d;
+        const double mean = 0.5 * (p + q), dev = std::hypot(0.5 * (p - q), r);
+        return std::sqrt(mean + dev);
+    }
+    bool is_finite() const {
+        return std::isfinite(a) && std::isfinite(b) && std::isfinite(c) && std::isfinite(d) &&
+               std::isfinite(e) && std::isfinite(f);
+    }
+};
+
+constexpr double degrees_to_radians(double deg) { return deg * (std::numbers::pi / 180.0); }
+
+} // namespace casteljau

@@ -1,0 +1,78 @@
+// Point and Vec2: positions and displacements in the plane, kept distinct.
+//
+// The algebra is the affine one: point - point = vector, point + vector = point,
+// vector arithmetic is a vector space; there is no point + point and no
+// scalar * point. Interpolation between points is `lerp`, which is exact at
+// t = 0 and t = 1 (it is written (1 - t) a + t b, not a + t (b - a)), so de
+// Casteljau constructions reproduce their end points bit for bit.
+#pragma once
+
+#include <cmath>
+
+namespace casteljau {
+
+struct Vec2 {
+    double x = 0, y = 0;
+
+    constexpr Vec2 operator+(Vec2 v) const { return {x + v.x, y + v.y}; }
+    constexpr Vec2 operator-(Vec2 v) const { return {x - v.x, y - v.y}; }
+    constexpr Vec2 operator-() const { return {-x, -y}; }
+    constexpr Vec2 operator*(double s) const { return {x * s, y * s}; }
+    constexpr Vec2 operator/(double s) const { return {x / s, y / s}; }
+    constexpr Vec2& operator+=(Vec2 v) { return *this = *this + v; }
+    constexpr Vec2& operator-=(Vec2 v) { return *this = *this - v; }
+    constexpr Vec2& operator*=(double s) { return *this = *this * s; }
+    constexpr bool operator==(const Vec2&) const = default;
+
+    constexpr double dot(Vec2 v) const { return x * v.x + y * v.y; }
+    // z component of the 3D cross product: positive when v turns left of *this.
+    constexpr double cross(Vec2 v) const { return x * v.y - y * v.x; }
+    constexpr double length_sq() const { return dot(*this); }
+    double length() const { return std::hypot(x, y); }
+    // Left-hand perpendicular (rotated +90 degrees in a y-up frame).
+    constexpr Vec2 perp() const { return {-y, x}; }
+    bool is_finite() const { return std::isfinite(x) && std::isfinite(y); }
+};
+
+constexpr Vec2 operator*(double s, Vec2 v) { return v * s; }
+
+struct Point {
+    double x = 0, y = 0;
+
+    constexpr Vec2 operator-(Point p) const { return {x - p.x, y - p.y}; }
+    constexpr Point operator+(Vec2 v) const { return {x + v.x, y + v.y}; }
+    constexpr Point operator-(Vec2 v) const { return {x - v.x, y - v.y}; }
+    constexpr Point& operator+=(Vec2 v) { return *this = *this + v; }
+    constexpr bool operator==(const Point&) const = default;
+
+    // The displacement from the origin: for the rare place where a point's
+    // coordinates are used as a vector (power-basis coefficients, centroids).
+    constexpr Vec2 to_vec() const { return {x, y}; }
+    bool is_finite() const { return std::isfinite(x) && std::isfinite(y); }
+};
+
+constexpr Point lerp(Point a, Point b, double t) {
+    const double s = 1.0 - t;
+    return {s * a.x + t * b.x, s * a.y + t * b.y};
+}
+
+constexpr Vec2 lerp(Vec2 a, Vec2 b, double t) {
+    const double s = 1.0 - t;
+    return {s * a.x + t * b.x, s * a.y + t * b.y};
+}
+
+constexpr Point midpoint(Point a, Point b) { return {0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}; }
+
+inline double distance(Point a, Point b) { return (b - a).length(); }
+
+// Distance from p to the closed segment [a, b]; a degenerate segment is a point.
+inline double distance_to_segment(Point p, Point a, Point b) {
+    const Vec2 ab = b - a, ap = p - a;
+    const double len_sq = ab.length_sq();
+    if (len_sq == 0.0) return ap.length();
+    double t = ap.dot(ab) / len_sq;
+    t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+    return (p - lerp(a, b, t)).length();
+}
+
+} // namespace casteljau

@@ -1,0 +1,46 @@
+// Rect: an axis-aligned box [x0, x1] x [y0, y1].
+//
+// Guarantee: a Rect built through its factories is ordered (x0 <= x1, y0 <= y1);
+// finiteness is the caller's (the core assumes finite input). The empty Rect
+// (`Rect::empty()`) is the identity of `united`: its bounds are inverted
+// infinities, and `is_empty()` is the only query that is meaningful on it.
+#pragma once
+
+#include "casteljau/geom/point.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace casteljau {
+
+struct Rect {
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+
+    static constexpr Rect from_points(Point a, Point b) {
+        return {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
+    }
+    static constexpr Rect empty() {
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        return {inf, inf, -inf, -inf};
+    }
+
+    constexpr bool is_empty() const { return !(x0 <= x1 && y0 <= y1); }
+    constexpr double width() const { return x1 - x0; }
+    constexpr double height() const { return y1 - y0; }
+    constexpr Point min() const { return {x0, y0}; }
+    constexpr Point max() const { return {x1, y1}; }
+
+    constexpr Rect united(Point p) const {
+        return {std::min(x0, p.x), std::min(y0, p.y), std::max(x1, p.x), std::max(y1, p.y)};
+    }
+    constexpr Rect united(const Rect& r) const {
+        return {std::min(x0, r.x0), std::min(y0, r.y0), std::max(x1, r.x1), std::max(y1, r.y1)};
+    }
+    constexpr Rect inflated(double by) const { return {x0 - by, y0 - by, x1 + by, y1 + by}; }
+    constexpr bool contains(Point p) const {
+        return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1;
+    }
+    constexpr bool operator==(const Rect&) const = default;
+};
+
+} // namespace casteljau

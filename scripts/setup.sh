@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package Casteljau needs to build, test and benchmark.
+# Idempotent: packages already present are skipped by apt; safe to rerun.
+# Run as root (or with sudo available). Nothing is downloaded outside apt.
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ pkg-config git
+  libopenimageio-dev openimageio-tools
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libpugixml-dev libcli11-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "setup: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
