@@ -34,7 +34,19 @@ template <int N>
 struct Bez {
     static_assert(N >= 1 && N <= 3, "fixed-degree curves are lines, quadratics and cubics");
     static constexpr int degree = N;
-    std::array<Point, N + 1> p;
+    std::array<Point, N + 1> p{};
+
+    constexpr Bez() = default;
+    constexpr Bez(const std::array<Point, N + 1>& pts) : p(pts) {}
+    constexpr Bez(Point a, Point b)
+        requires(N == 1)
+        : p{a, b} {}
+    constexpr Bez(Point a, Point b, Point c)
+        requires(N == 2)
+        : p{a, b, c} {}
+    constexpr Bez(Point a, Point b, Point c, Point d)
+        requires(N == 3)
+        : p{a, b, c, d} {}
 
     constexpr Point start() const { return p[0]; }
     constexpr Point end() const { return p[N]; }

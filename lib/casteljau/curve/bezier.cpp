@@ -21,13 +21,15 @@ PowerForm Bezier::power() const {
 }
 
 namespace {
-// k-th hodograph (k = 1, 2) as control vectors; returns its point count.
+// Control vectors of the k-th derivative (k = 1, 2); returns how many there are.
 std::size_t derivative_net(const Bezier& b, int k, std::array<Vec2, kMaxPoints>& h) {
-    std::size_t n = std::size_t(b.degree);
     hodograph(b.points(), h);
-    for (int j = 1; j < k && n > 0; ++j, --n)
-        for (std::size_t i = 0; i + 1 < n; ++i) h[i] = (h[i + 1] - h[i]) * double(n - 1);
-    return n + 1 - std::size_t(k);
+    std::size_t count = std::size_t(b.degree); // the hodograph has degree - 1 + 1 points
+    if (k == 2) {
+        for (std::size_t i = 0; i + 1 < count; ++i) h[i] = (h[i + 1] - h[i]) * double(count - 1);
+        --count;
+    }
+    return count;
 }
 } // namespace
 

@@ -8,13 +8,9 @@ namespace casteljau {
 
 namespace {
 
-std::array<HPoint, 3> homogeneous(const Conic& c) {
-    return {HPoint::weighted(c.p0, 1.0), HPoint::weighted(c.p1, c.w), HPoint::weighted(c.p2, 1.0)};
-}
+std::array<HPoint, 3> homogeneous(const Conic& c) { return HConic::from(c).h; }
 
-Conic from_homogeneous(const std::array<HPoint, 3>& h) {
-    return {h[0].project(), h[1].project(), h[2].project(), h[1].w / std::sqrt(h[0].w * h[2].w)};
-}
+Conic from_homogeneous(const std::array<HPoint, 3>& h) { return HConic{h}.standard(); }
 
 } // namespace
 

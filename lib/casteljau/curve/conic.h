@@ -14,6 +14,7 @@
 #include "casteljau/geom/rect.h"
 
 #include <array>
+#include <cmath>
 
 namespace casteljau {
 
@@ -37,6 +38,35 @@ struct Conic {
     RationalBezier to_rational() const;
 
     constexpr bool operator==(const Conic&) const = default;
+};
+
+// A conic in homogeneous form, weights (w0, w1, w2) unnormalised. Its split is
+// the plain homogeneous de Casteljau split, which keeps the parameterisation:
+// piece [0, u] at s is the whole curve at u s. (Conic::split renormalises, which
+// reparameterises the pieces.) The flatteners work on this form so that the
+// parameters they report are the original conic's.
+struct HConic {
+    std::array<HPoint, 3> h{};
+
+    static HConic from(const Conic& c) {
+        return {{HPoint::weighted(c.p0, 1.0), HPoint::weighted(c.p1, c.w),
+                 HPoint::weighted(c.p2, 1.0)}};
+    }
+    Point start() const { return h[0].project(); }
+    Point end() const { return h[2].project(); }
+    Point eval(double t) const {
+        return decasteljau_eval(std::span<const HPoint, 3>(h), t).project();
+    }
+    // The same curve in standard form (end weights 1).
+    Conic standard() const {
+        return {h[0].project(), h[1].project(), h[2].project(), h[1].w / std::sqrt(h[0].w * h[2].w)};
+    }
+    std::array<HConic, 2> split(double t) const {
+        std::array<HConic, 2> r{};
+        decasteljau_split(std::span<const HPoint, 3>(h), t, std::span<HPoint, 3>(r[0].h),
+                          std::span<HPoint, 3>(r[1].h));
+        return r;
+    }
 };
 
 } // namespace casteljau

@@ -47,12 +47,17 @@ class Parser {
             skip_wsp();
         }
     }
-    // True when the next token starts a number (so a command repeats).
+    // True when the next token starts a number (so a command repeats). A
+    // comma promises another argument: a comma before anything else is an error.
     bool number_follows() {
-        skip_comma_wsp();
-        if (at_end()) return false;
-        const char c = s_[pos_];
-        return is_digit(c) || c == '.' || c == '-' || c == '+';
+        skip_wsp();
+        const bool comma = !at_end() && s_[pos_] == ',';
+        if (comma) ++pos_;
+        skip_wsp();
+        const char c = at_end() ? '\0' : s_[pos_];
+        const bool number = is_digit(c) || c == '.' || c == '-' || c == '+';
+        if (comma && !number) fail("expected a number after ','");
+        return number;
     }
 
     // number ::= sign? (digits ("." digits?)? | "." digits) exponent?
@@ -87,10 +92,15 @@ class Parser {
         }
         // from_chars rejects a leading '+', which the grammar allows.
         const std::size_t parse_begin = s_[begin] == '+' ? begin + 1 : begin;
-        const auto [end, ec] = std::from_chars(s_.data() + parse_begin, s_.data() + i, out);
+        const std::string_view token = s_.substr(begin, i - begin);
+        auto [end, ec] = std::from_chars(s_.data() + parse_begin, s_.data() + i, out);
+        // Too small to represent is zero (as every SVG renderer reads it); too
+        // large is an error: infinities never enter a path.
+        const bool underflow = ec == std::errc::result_out_of_range &&
+                               (token.find("e-") != token.npos || token.find("E-") != token.npos);
+        if (underflow) out = 0.0, ec = std::errc(), end = s_.data() + i;
         if (ec != std::errc() || end != s_.data() + i || !std::isfinite(out)) {
-            fail_at(begin, "number '" + std::string(s_.substr(begin, i - begin)) +
-                               "' is out of range");
+            fail_at(begin, "number '" + std::string(token) + "' is out of range");
             return false;
         }
         pos_ = i;

@@ -67,6 +67,10 @@ double chord_deviation(const Conic& c) noexcept {
     return c.w * std::fabs(d[0]) / (1.0 + c.w);
 }
 
+double chord_deviation(const HConic& c) noexcept { return chord_deviation(c.standard()); }
+
+double hull_deviation(const HConic& c) noexcept { return hull_deviation(c.standard()); }
+
 double chord_deviation(const Bezier& c) noexcept { return hull_deviation(c.points()); }
 
 double hull_deviation(const Conic& c) noexcept {

@@ -49,6 +49,7 @@ double chord_deviation(const Line& c) noexcept;
 double chord_deviation(const QuadBez& c) noexcept;
 double chord_deviation(const CubicBez& c) noexcept;
 double chord_deviation(const Conic& c) noexcept;
+double chord_deviation(const HConic& c) noexcept;
 double chord_deviation(const Bezier& c) noexcept;
 double chord_deviation(const RationalBezier& c) noexcept;
 
@@ -58,6 +59,7 @@ double hull_deviation(const Bez<N>& c) noexcept {
     return hull_deviation(c.points());
 }
 double hull_deviation(const Conic& c) noexcept;
+double hull_deviation(const HConic& c) noexcept;
 double hull_deviation(const Bezier& c) noexcept;
 double hull_deviation(const RationalBezier& c) noexcept;
 

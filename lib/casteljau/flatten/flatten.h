@@ -20,11 +20,19 @@ struct FlattenOptions {
     int segments = 0; // Uniform only: N per curve; 0 = the smallest that Wang's bound allows
 };
 
+// The form a curve is subdivided in: itself, except conics, which subdivide in
+// homogeneous form so that the reported parameters stay the conic's own.
+template <class Curve>
+const Curve& subdivision_form(const Curve& c) {
+    return c;
+}
+inline HConic subdivision_form(const Conic& c) { return HConic::from(c); }
+
 template <class Curve, class Sink>
 void flatten_curve(const Curve& c, const FlattenOptions& o, Sink&& sink) {
     switch (o.method) {
-    case FlattenMethod::Adaptive: flatten_adaptive(c, o.tolerance, sink); break;
-    case FlattenMethod::Halving: flatten_halving(c, o.tolerance, sink); break;
+    case FlattenMethod::Adaptive: flatten_adaptive(subdivision_form(c), o.tolerance, sink); break;
+    case FlattenMethod::Halving: flatten_halving(subdivision_form(c), o.tolerance, sink); break;
     case FlattenMethod::Uniform:
         flatten_uniform(c, o.segments > 0 ? o.segments : wang_segments(c, o.tolerance), sink);
         break;

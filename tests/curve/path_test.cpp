@@ -1,0 +1,91 @@
+#include "casteljau/curve/path.h"
+
+#include "corpus.h"
+
+#include <gtest/gtest.h>
+
+namespace casteljau {
+namespace {
+
+TEST(Path, BuilderFollowsSvgSubpathRules) {
+    Path p;
+    p.line_to({10, 0}); // no move_to: starts at the origin
+    p.quad_to({10, 10}, {0, 10});
+    p.close(); // adds the closing line back to (0, 0)
+    p.line_to({5, 5}); // after close: a new subpath from the old start
+    ASSERT_EQ(p.subpaths().size(), 2u);
+    const Subpath& a = p.subpaths()[0];
+    EXPECT_TRUE(a.closed);
+    EXPECT_EQ(a.segments.size(), 3u);
+    EXPECT_EQ(segment_end(a.segments.back()), Point(0, 0));
+    EXPECT_EQ(p.subpaths()[1].start, Point(0, 0));
+    p.move_to({1, 1});
+    p.move_to({2, 2}); // a lone move_to leaves no empty subpath behind
+    p.cubic_to({3, 3}, {4, 3}, {5, 2});
+    EXPECT_EQ(p.subpaths().size(), 3u);
+    EXPECT_EQ(p.subpaths()[2].start, Point(2, 2));
+}
+
+TEST(Path, GlobalParameterisationWalksTheSegments) {
+    Path p;
+    p.move_to({0, 0});
+    p.line_to({10, 0});
+    p.cubic_to({10, 5}, {5, 10}, {0, 10});
+    EXPECT_EQ(p.eval(0, 0.5), Point(5, 0));
+    EXPECT_EQ(p.eval(0, 1.0), Point(10, 0));
+    const CubicBez c{{10, 0}, {10, 5}, {5, 10}, {0, 10}};
+    EXPECT_EQ(p.eval(0, 1.25), c.eval(0.25));
+    EXPECT_EQ(p.eval(0, 2.0), Point(0, 10));
+    EXPECT_EQ(p.eval(0, 7.0), Point(0, 10)); // clamped
+}
+
+TEST(Path, TransformAndBounds) {
+    Path p;
+    p.move_to({0, 0});
+    p.cubic_to({0, 100}, {100, 100}, {100, 0});
+    const Rect b = p.bounds();
+    EXPECT_NEAR(b.y1, 75, 1e-12);
+    p.transform(Affine::translate({5, 5}) * Affine::scale(2));
+    const Rect t = p.bounds();
+    EXPECT_NEAR(t.y1, 155, 1e-12);
+    EXPECT_NEAR(t.x1, 205, 1e-12);
+}
+
+TEST(Path, ContinuityOfConstructedJoints) {
+    // Two cubics meeting at (10, 0); the second one's handles set each level.
+    const CubicBez a{{0, 0}, {3, 4}, {7, -2}, {10, 0}};
+    const Vec2 d = a.p[3] - a.p[2];              // a'(1) / 3
+    const Vec2 dd = (a.p[3] - a.p[2]) - (a.p[2] - a.p[1]); // a''(1) / 6
+    const Point j = a.p[3];
+    // C2: b1 = j + d, b2 = j + 2d + dd (matching first and second derivatives).
+    const CubicBez c2{{j, j + d, j + d * 2 + dd, {20, 5}}};
+    const CubicBez c1{{j, j + d, {15, 9}, {20, 5}}};
+    const CubicBez g1{{j, j + d * 2.5, {15, 9}, {20, 5}}};
+    const CubicBez c0{{j, j + Vec2{1, 1}, {15, 9}, {20, 5}}};
+    const CubicBez gap{{10, 0.5}, {12, 1}, {15, 9}, {20, 5}};
+    EXPECT_EQ(joint_continuity(a, c2), Continuity::C2);
+    EXPECT_EQ(joint_continuity(a, c1), Continuity::C1);
+    EXPECT_EQ(joint_continuity(a, g1), Continuity::G1);
+    EXPECT_EQ(joint_continuity(a, c0), Continuity::C0);
+    EXPECT_EQ(joint_continuity(a, gap), Continuity::None);
+    // Opposite tangent (a cusp at the joint) is not G1.
+    const CubicBez cusp{{j, j - d, {15, 9}, {20, 5}}};
+    EXPECT_EQ(joint_continuity(a, cusp), Continuity::C0);
+    // A degenerate handle falls back to the limit direction: still G1.
+    const CubicBez degenerate{{j, j, j + d * 3, {20, 5}}};
+    EXPECT_EQ(joint_continuity(a, degenerate), Continuity::G1);
+}
+
+TEST(Path, ContinuityOfAClosedCircleOfConics) {
+    Path p;
+    p.move_to({10, 0});
+    p.arc_to({10, 10}, 0, false, true, {-10, 0});
+    p.arc_to({10, 10}, 0, false, true, {10, 0});
+    p.close();
+    const auto joints = p.continuity(0, 1e-9);
+    ASSERT_EQ(joints.size(), 4u); // four quarter conics, closing joint included
+    for (Continuity c : joints) EXPECT_GE(c, Continuity::G1) << to_string(c);
+}
+
+} // namespace
+} // namespace casteljau

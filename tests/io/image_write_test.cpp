@@ -1,0 +1,82 @@
+#include "casteljau/io/image_write.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+namespace casteljau {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TempDir {
+    fs::path path;
+    TempDir() : path(fs::temp_directory_path() / ("casteljau_io_" + std::to_string(::getpid()))) {
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::permissions(path, fs::perms::owner_all, ec);
+        fs::remove_all(path, ec);
+    }
+};
+
+std::vector<float> gradient(int w, int h) {
+    std::vector<float> px(std::size_t(w * h * 4));
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            float* p = &px[std::size_t((y * w + x) * 4)];
+            p[0] = float(x) / float(w - 1), p[1] = float(y) / float(h - 1), p[2] = 0.5f, p[3] = 1;
+        }
+    return px;
+}
+
+TEST(ImageWrite, RoundTripsPngAndExrAndLeavesNoTemporaryFile) {
+    TempDir dir;
+    const auto px = gradient(16, 8);
+    for (const char* name : {"a.png", "a.exr", "a.tif"}) {
+        const std::string path = (dir.path / name).string();
+        ASSERT_EQ(write_image_atomic(path, {16, 8, px}), "");
+        auto in = OIIO::ImageInput::open(path);
+        ASSERT_TRUE(in) << name;
+        EXPECT_EQ(in->spec().width, 16);
+        EXPECT_EQ(in->spec().nchannels, 4);
+        std::vector<float> back(px.size());
+        ASSERT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, back.data()));
+        const float step = std::string(name) == "a.png" ? 0.5f / 255 + 1e-6f : 1e-6f;
+        for (std::size_t i = 0; i < px.size(); ++i) ASSERT_NEAR(back[i], px[i], step) << name << i;
+    }
+    for (const auto& e : fs::directory_iterator(dir.path))
+        EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
+TEST(ImageWrite, FailuresLeaveAnExistingFileIntact) {
+    TempDir dir;
+    const auto px = gradient(4, 4);
+    // The destination is a folder.
+    fs::create_directories(dir.path / "folder.png");
+    EXPECT_NE(write_image_atomic((dir.path / "folder.png").string(), {4, 4, px}).find("folder"),
+              std::string::npos);
+    // An unknown extension.
+    EXPECT_NE(write_image_atomic((dir.path / "x.nosuchformat").string(), {4, 4, px}), "");
+    // An unwritable folder keeps its existing file byte for byte.
+    const fs::path sub = dir.path / "locked";
+    fs::create_directories(sub);
+    const fs::path existing = sub / "keep.png";
+    { std::ofstream(existing) << "precious"; }
+    fs::permissions(sub, fs::perms::owner_read | fs::perms::owner_exec);
+    if (::geteuid() != 0) { // root ignores permissions
+        EXPECT_NE(write_image_atomic(existing.string(), {4, 4, px}), "");
+        std::ifstream in(existing);
+        std::string content;
+        in >> content;
+        EXPECT_EQ(content, "precious");
+    }
+}
+
+} // namespace
+} // namespace casteljau

@@ -1,0 +1,17 @@
+// Geometric checks for tests: convex hulls and point comparisons with a
+// tolerance scaled to the data.
+#pragma once
+
+#include "casteljau/geom/point.h"
+
+#include <span>
+#include <vector>
+
+namespace casteljau::testing {
+
+// Convex hull, counter-clockwise (Andrew's monotone chain).
+std::vector<Point> convex_hull(std::vector<Point> pts);
+// Distance by which p lies outside the convex polygon (0 inside or on it).
+double distance_outside(std::span<const Point> hull, Point p);
+
+} // namespace casteljau::testing
