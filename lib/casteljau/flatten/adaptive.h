@@ -61,6 +61,10 @@ struct AdaptiveParams {
     static constexpr double kTarget = 0.95;
     // Probes per chord before the largest flat one so far is taken.
     static constexpr int kMaxProbes = 6;
+    // The remainder is tested as a whole when the predicted chord is at least
+    // 1/kRestCheck of it. Predictions err by well under 2x except where the
+    // curvature changes abruptly, where a skipped test costs one extra chord.
+    static constexpr double kRestCheck = 2.0;
 };
 
 template <class Curve>
@@ -74,14 +78,19 @@ class AdaptiveFlattener {
     bool next(FlatVertex& out) noexcept {
         if (done_) return false;
         const double span = 1.0 - t0_;
-        const double e = chord_deviation(rest_);
-        if (e <= tol_ || span <= 2 * P::kMinStep) {
-            out = {rest_.end(), 1.0};
-            done_ = true;
-            return true;
+        // The whole remainder is tested only when the predicted chord could
+        // reach its end: otherwise the prediction already says it is not flat.
+        double guess = hint_ / span;
+        if (hint_ == 0 || guess * P::kRestCheck >= 1.0 || span <= 2 * P::kMinStep) {
+            const double e = chord_deviation(rest_);
+            if (e <= tol_ || span <= 2 * P::kMinStep) {
+                out = {rest_.end(), 1.0};
+                done_ = true;
+                return true;
+            }
+            if (hint_ == 0) guess = std::sqrt(P::kTarget * tol_ / e);
         }
         const double min_u = P::kMinStep / span;
-        const double guess = hint_ > 0 ? hint_ / span : std::sqrt(P::kTarget * tol_ / e);
         Split s = flat_prefix(std::clamp(guess, min_u, 0.98), min_u);
         const double step = s.u * span;
         t0_ += step;

@@ -10,20 +10,21 @@ namespace casteljau {
 
 namespace {
 
-// Signed offsets of the inner control points from the chord line, or false when
-// the chord is degenerate or some point projects outside the chord.
+// Signed offsets of the inner control points from the chord line, scaled by
+// the chord length (cross(P_i - P_0, v) = |v| d_i: the division by |v| is left
+// to the caller, once). False when the chord is degenerate or some point
+// projects outside the chord.
 template <std::size_t K>
-bool inner_offsets(std::span<const Point> p, std::array<double, K>& d) {
+bool inner_offsets(std::span<const Point> p, std::array<double, K>& d, double& len_sq) {
     const Point a = p.front(), b = p.back();
     const Vec2 v = b - a;
-    const double len_sq = v.length_sq();
+    len_sq = v.length_sq();
     if (len_sq == 0.0) return false;
-    const double inv_len = 1.0 / std::sqrt(len_sq);
     for (std::size_t i = 0; i < K; ++i) {
         const Vec2 w = p[i + 1] - a;
         const double along = w.dot(v);
         if (along < 0.0 || along > len_sq) return false;
-        d[i] = w.cross(v) * inv_len;
+        d[i] = w.cross(v);
     }
     return true;
 }
@@ -42,13 +43,15 @@ double chord_deviation(const Line&) noexcept { return 0.0; }
 
 double chord_deviation(const QuadBez& c) noexcept {
     std::array<double, 1> d;
-    if (!inner_offsets(c.points(), d)) return hull_deviation(c.points());
-    return 0.5 * std::fabs(d[0]);
+    double len_sq;
+    if (!inner_offsets(c.points(), d, len_sq)) return hull_deviation(c.points());
+    return 0.5 * std::fabs(d[0]) / std::sqrt(len_sq);
 }
 
 double chord_deviation(const CubicBez& c) noexcept {
     std::array<double, 2> d;
-    if (!inner_offsets(c.points(), d)) return hull_deviation(c.points());
+    double len_sq;
+    if (!inner_offsets(c.points(), d, len_sq)) return hull_deviation(c.points());
     const auto offset = [&](double t) {
         return 3.0 * t * (1.0 - t) * ((1.0 - t) * d[0] + t * d[1]);
     };
@@ -57,14 +60,15 @@ double chord_deviation(const CubicBez& c) noexcept {
     double m = 0;
     for (int i = 0; i < k; ++i)
         if (roots[i] > 0.0 && roots[i] < 1.0) m = std::max(m, std::fabs(offset(roots[i])));
-    return m;
+    return m / std::sqrt(len_sq);
 }
 
 double chord_deviation(const Conic& c) noexcept {
     const std::array<Point, 3> p{c.p0, c.p1, c.p2};
     std::array<double, 1> d;
-    if (!inner_offsets(std::span<const Point>(p), d)) return hull_deviation(p);
-    return c.w * std::fabs(d[0]) / (1.0 + c.w);
+    double len_sq;
+    if (!inner_offsets(std::span<const Point>(p), d, len_sq)) return hull_deviation(p);
+    return c.w * std::fabs(d[0]) / ((1.0 + c.w) * std::sqrt(len_sq));
 }
 
 double chord_deviation(const HConic& c) noexcept { return chord_deviation(c.standard()); }

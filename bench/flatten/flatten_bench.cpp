@@ -1,0 +1,129 @@
+// Adaptive vs uniform flattening at equal measured error.
+//
+// Corpus: testing::cubic_corpus (random cubics, quarter circles, S-curves,
+// loops, near-cusps, long nearly straight curves; seeded), also used by the
+// tests. For each tolerance and method one benchmark flattens the whole corpus
+// per iteration; counters:
+//   ns_per_curve        time per curve (the benchmark's time / curves)
+//   segments_per_curve  mean segments emitted per curve
+//   Msegments_per_s     emitted segments per second
+//   max_error_px        the measured maximum error (error.h), taken once
+//   vs_optimal          segments / the optimal count (integral of sqrt(k / 8 tol) ds)
+// Methods: adaptive (adaptive.h), halving (textbook, halving.h), uniform_best
+// (per curve the smallest N whose measured error meets the tolerance: the
+// strongest uniform baseline, its N found before timing), uniform_wang (N from
+// Wang's bound, computed inside the timed loop, as a renderer would).
+#include "casteljau/flatten/error.h"
+#include "casteljau/flatten/flatten.h"
+
+#include "corpus.h"
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+#include <vector>
+
+namespace casteljau {
+namespace {
+
+const std::vector<testing::NamedCubic>& corpus() {
+    static const auto c = testing::cubic_corpus(2026, 50);
+    return c;
+}
+
+enum class Method { Adaptive, Halving, UniformBest, UniformWang };
+const char* const kNames[] = {"adaptive", "halving", "uniform_best", "uniform_wang"};
+const double kTolerances[] = {1.0, 0.5, 0.25, 0.1};
+
+struct Prepared {
+    std::vector<int> best_n; // UniformBest only
+    double segments = 0, max_error = 0, optimal = 0;
+};
+
+template <class Sink>
+void flatten_one(const CubicBez& c, Method m, double tol, int best_n, Sink&& sink) {
+    switch (m) {
+    case Method::Adaptive: flatten_adaptive(c, tol, sink); break;
+    case Method::Halving: flatten_halving(c, tol, sink); break;
+    case Method::UniformBest: flatten_uniform(c, best_n, sink); break;
+    case Method::UniformWang: flatten_uniform(c, wang_segments(c, tol), sink); break;
+    }
+}
+
+Prepared prepare(Method m, double tol) {
+    Prepared p;
+    for (const auto& [kind, c] : corpus()) {
+        const int n = m == Method::UniformBest ? best_uniform_segments(c, tol, wang_segments(c, tol)) : 0;
+        p.best_n.push_back(n);
+        std::vector<FlatVertex> v;
+        flatten_one(c, m, tol, n, [&](const FlatVertex& x) { v.push_back(x); });
+        p.segments += double(v.size());
+        p.max_error = std::max(p.max_error, polyline_error(c, c.start(), v));
+        p.optimal += testing::optimal_segments(c, tol);
+    }
+    return p;
+}
+
+void BM_Flatten(benchmark::State& state, Method m, double tol) {
+    const Prepared p = prepare(m, tol);
+    const auto& curves = corpus();
+    for (auto _ : state) {
+        double checksum = 0;
+        for (std::size_t i = 0; i < curves.size(); ++i)
+            flatten_one(curves[i].curve, m, tol, p.best_n[i],
+                        [&](const FlatVertex& v) { checksum += v.p.x; });
+        benchmark::DoNotOptimize(checksum);
+    }
+    const double n = double(curves.size());
+    using C = benchmark::Counter;
+    state.counters["ns_per_curve"] =
+        C(n * 1e-9, C::kIsIterationInvariantRate | C::kInvert);
+    state.counters["segments_per_curve"] = p.segments / n;
+    state.counters["Msegments_per_s"] = C(p.segments * 1e-6, C::kIsIterationInvariantRate);
+    state.counters["max_error_px"] = p.max_error;
+    state.counters["vs_optimal"] = p.segments / p.optimal;
+}
+
+// Per-kind view at the default tolerance: where adaptive wins, and by how much.
+void BM_FlattenKind(benchmark::State& state, Method m, std::string kind) {
+    std::vector<CubicBez> curves;
+    for (const auto& [k, c] : corpus())
+        if (k == kind) curves.push_back(c);
+    const double tol = 0.25;
+    std::vector<int> best_n;
+    double segments = 0;
+    for (const CubicBez& c : curves) {
+        best_n.push_back(best_uniform_segments(c, tol, wang_segments(c, tol)));
+        flatten_one(c, m, tol, best_n.back(), [&](const FlatVertex&) { segments += 1; });
+    }
+    for (auto _ : state) {
+        double checksum = 0;
+        for (std::size_t i = 0; i < curves.size(); ++i)
+            flatten_one(curves[i], m, tol, best_n[i], [&](const FlatVertex& v) { checksum += v.p.y; });
+        benchmark::DoNotOptimize(checksum);
+    }
+    using C = benchmark::Counter;
+    state.counters["ns_per_curve"] =
+        C(double(curves.size()) * 1e-9, C::kIsIterationInvariantRate | C::kInvert);
+    state.counters["segments_per_curve"] = segments / double(curves.size());
+}
+
+const int kRegistered = [] {
+    for (double tol : kTolerances)
+        for (Method m : {Method::Adaptive, Method::UniformBest, Method::UniformWang, Method::Halving})
+            benchmark::RegisterBenchmark(
+                ("flatten/" + std::string(kNames[int(m)]) + "/tol:" + std::to_string(tol).substr(0, 4))
+                    .c_str(),
+                BM_Flatten, m, tol);
+    for (const char* kind : {"random", "quarter_circle", "s_curve", "loop", "near_cusp", "nearly_straight"})
+        for (Method m : {Method::Adaptive, Method::UniformBest})
+            benchmark::RegisterBenchmark(
+                ("kind/" + std::string(kind) + "/" + kNames[int(m)]).c_str(), BM_FlattenKind, m,
+                std::string(kind));
+    return 0;
+}();
+
+} // namespace
+} // namespace casteljau
+
+BENCHMARK_MAIN();
