@@ -110,6 +110,25 @@ TEST(Flatten, RangeFormEqualsSinkForm) {
     }
 }
 
+// Regression: greedy prefixes left a sliver as the last chord of arcs (seen on
+// the SVG arc of examples/curves_image). On a curve of constant curvature all
+// chords should be about equally long.
+TEST(Flatten, NoSliverAtTheEndOfConstantCurvatureArcs) {
+    for (double r : {50.0, 120.0, 700.0}) {
+        for (double tol : {0.1, 0.25, 0.5}) {
+            const Conic arc = Conic::circular_arc({0, 0}, r, 0.3, 1.9);
+            std::vector<FlatVertex> v;
+            flatten_adaptive(HConic::from(arc), tol, [&](const FlatVertex& x) { v.push_back(x); });
+            double shortest = 1, longest = 0, t = 0;
+            for (const FlatVertex& x : v) {
+                shortest = std::min(shortest, x.t - t), longest = std::max(longest, x.t - t);
+                t = x.t;
+            }
+            EXPECT_LT(longest / shortest, 2.0) << "r " << r << " tol " << tol << " chords " << v.size();
+        }
+    }
+}
+
 TEST(Flatten, UniformWithGivenSegmentsSamplesEvenly) {
     const CubicBez c{{0, 0}, {0, 100}, {100, 100}, {100, 0}};
     const Result r = run(c, FlattenMethod::Uniform, 0.25, 7);

@@ -69,37 +69,42 @@ EllipseArc svg_arc(const SvgArcInput& in) {
     return arc;
 }
 
-int svg_arc_to_conics(const SvgArcInput& in, std::array<Conic, 4>& out) {
+namespace {
+
+// Maps each unit-circle piece made by `make(a0, a1)` through the ellipse's map,
+// then pins the first start and the last end to the exact input end points.
+template <class Piece, class Make, class Pin>
+int arc_pieces(const SvgArcInput& in, std::array<Piece, 4>& out, Make make, Pin pin) {
     const EllipseArc arc = svg_arc(in);
     if (arc.kind != EllipseArc::Kind::Arc) return 0;
     const int n = piece_count(arc.dtheta);
     const Affine m = arc.unit_circle_map();
     const double step = arc.dtheta / n;
     for (int i = 0; i < n; ++i) {
-        const double a0 = arc.theta1 + step * i, a1 = a0 + step;
-        out[i] = Conic::circular_arc({0, 0}, 1.0, a0, a1).transformed(m);
+        const double a0 = arc.theta1 + step * i;
+        out[i] = make(a0, a0 + step).transformed(m);
     }
-    out[0].p0 = in.from;
-    out[n - 1].p2 = in.to;
+    pin(out[0], out[n - 1]);
     return n;
 }
 
+} // namespace
+
+int svg_arc_to_conics(const SvgArcInput& in, std::array<Conic, 4>& out) {
+    return arc_pieces(
+        in, out, [](double a0, double a1) { return Conic::circular_arc({0, 0}, 1.0, a0, a1); },
+        [&](Conic& first, Conic& last) { first.p0 = in.from, last.p2 = in.to; });
+}
+
 int svg_arc_to_cubics(const SvgArcInput& in, std::array<CubicBez, 4>& out) {
-    const EllipseArc arc = svg_arc(in);
-    if (arc.kind != EllipseArc::Kind::Arc) return 0;
-    const int n = piece_count(arc.dtheta);
-    const Affine m = arc.unit_circle_map();
-    const double step = arc.dtheta / n;
-    const double k = 4.0 / 3.0 * std::tan(step / 4.0);
-    for (int i = 0; i < n; ++i) {
-        const double a0 = arc.theta1 + step * i, a1 = a0 + step;
-        const Point s{std::cos(a0), std::sin(a0)}, e{std::cos(a1), std::sin(a1)};
-        const CubicBez unit{{s, s + Vec2{-s.y, s.x} * k, e - Vec2{-e.y, e.x} * k, e}};
-        out[i] = unit.transformed(m);
-    }
-    out[0].p[0] = in.from;
-    out[n - 1].p[3] = in.to;
-    return n;
+    return arc_pieces(
+        in, out,
+        [](double a0, double a1) {
+            const double k = 4.0 / 3.0 * std::tan((a1 - a0) / 4.0);
+            const Point s{std::cos(a0), std::sin(a0)}, e{std::cos(a1), std::sin(a1)};
+            return CubicBez{s, s + Vec2{-s.y, s.x} * k, e - Vec2{-e.y, e.x} * k, e};
+        },
+        [&](CubicBez& first, CubicBez& last) { first.p[0] = in.from, last.p[3] = in.to; });
 }
 
 } // namespace casteljau

@@ -54,22 +54,19 @@ Segment segment_transformed(const Segment& s, const Affine& m) {
     return visit_curve(s, [&m](const auto& c) -> Segment { return c.transformed(m); });
 }
 
-Vec2 segment_start_tangent(const Segment& s) {
-    return visit_curve(s, [](const auto& c) {
+namespace {
+Vec2 segment_tangent(const Segment& s, bool at_start) {
+    return visit_curve(s, [at_start](const auto& c) {
         if constexpr (std::is_same_v<std::decay_t<decltype(c)>, Conic>)
-            return conic_tangent(c, true);
+            return conic_tangent(c, at_start);
         else
-            return bez_tangent(c, true);
+            return bez_tangent(c, at_start);
     });
 }
-Vec2 segment_end_tangent(const Segment& s) {
-    return visit_curve(s, [](const auto& c) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(c)>, Conic>)
-            return conic_tangent(c, false);
-        else
-            return bez_tangent(c, false);
-    });
-}
+} // namespace
+
+Vec2 segment_start_tangent(const Segment& s) { return segment_tangent(s, true); }
+Vec2 segment_end_tangent(const Segment& s) { return segment_tangent(s, false); }
 
 const char* to_string(Continuity c) {
     switch (c) {

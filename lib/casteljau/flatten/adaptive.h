@@ -92,6 +92,7 @@ class AdaptiveFlattener {
         }
         const double min_u = P::kMinStep / span;
         Split s = flat_prefix(std::clamp(guess, min_u, 0.98), min_u);
+        balance_last_two(s);
         const double step = s.u * span;
         t0_ += step;
         // Predict the next chord's parameter length from this one's deviation.
@@ -131,6 +132,16 @@ class AdaptiveFlattener {
         std::array<Curve, 2> halves;
         double u = 0, dev = 0;
     };
+
+    // When the remainder ends in two chords (prefix and suffix both flat), a
+    // greedy prefix leaves a sliver as the last chord; two equal halves cost the
+    // same count and spread the deviation, so take them when both are flat.
+    void balance_last_two(Split& s) const noexcept {
+        if (s.u <= 0.5 || chord_deviation(s.halves[1]) > tol_) return;
+        const auto halves = rest_.split(0.5);
+        const double d0 = chord_deviation(halves[0]), d1 = chord_deviation(halves[1]);
+        if (d0 <= tol_ && d1 <= tol_) s = {halves, 0.5, std::max(d0, d1)};
+    }
 
     // The safeguarded secant search described at the top of the file, from a
     // first probe u; `min_u` is the depth cap in the remainder's parameter.

@@ -90,6 +90,10 @@ double hull_deviation(const RationalBezier& c) noexcept {
     return hull_deviation(std::span<const Point>(p.data(), std::size_t(c.degree) + 1));
 }
 
-double chord_deviation(const RationalBezier& c) noexcept { return hull_deviation(c); }
+double chord_deviation(const RationalBezier& c) noexcept {
+    // A rational quadratic is a conic: use its exact form.
+    if (c.degree == 2) return chord_deviation(HConic{{c.h[0], c.h[1], c.h[2]}});
+    return hull_deviation(c);
+}
 
 } // namespace casteljau

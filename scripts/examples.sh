@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs the dependencies, builds, and renders the bundled examples into out/:
+#   out/curves.png          every curve kind, adaptive (blue) vs uniform (orange)
+#   out/curves.txt          their segment counts and measured errors
+#   out/flatten-*.json      `casteljau flatten --json` on the example paths
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bash scripts/setup.sh
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j "$(nproc)"
+
+mkdir -p out
+build/examples/curves_image out/curves.png 0.25 | tee out/curves.txt
+while read -r name data; do
+  for method in adaptive uniform; do
+    build/cli/casteljau flatten --path "$data" --flatten "$method" --json > "out/flatten-$name-$method.json"
+    printf '%-14s %-9s %s\n' "$name" "$method" "$(cut -c1-60 "out/flatten-$name-$method.json")"
+  done
+done < examples/paths.txt
+echo "examples written to $(pwd)/out"

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Installs the dependencies, builds everything with warnings as errors, runs
+# the whole test suite, then builds and runs it again under AddressSanitizer
+# and UndefinedBehaviorSanitizer. Used by CI (.ci/run) and by the README.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=$(nproc)
+
+bash scripts/setup.sh
+
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCASTELJAU_WERROR=ON
+cmake --build build -j "$jobs"
+ctest --test-dir build -j "$jobs" --output-on-failure
+
+# Sanitizers: the same tests, minus the install test (its consumer project is
+# built without the sanitizer runtime the instrumented library needs).
+cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCASTELJAU_WERROR=ON \
+      -DCASTELJAU_SANITIZE=ON -DCASTELJAU_BUILD_BENCH=OFF
+cmake --build build-asan -j "$jobs"
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest --test-dir build-asan -j "$jobs" --output-on-failure -E '^install\.'
