@@ -2,11 +2,10 @@
 //                    [--segments N] [--json]`
 // Flattens SVG path data (user units = device pixels) and reports the segment
 // count, the measured maximum error and the flattening time per curve.
-#include "commands.h"
-#include "json.h"
-
 #include "casteljau/curve/path_data.h"
 #include "casteljau/flatten/path_flatten.h"
+#include "commands.h"
+#include "json.h"
 
 #include <chrono>
 #include <cmath>
@@ -86,8 +85,8 @@ int run_flatten(const FlattenArgs& a) {
     std::size_t index = 0;
     for (const Polyline& l : lines) {
         if (index > 0) subpaths += ", ";
-        subpaths += "{\"first\": " + std::to_string(index) + ", \"count\": " +
-                    std::to_string(l.points.size()) +
+        subpaths += "{\"first\": " + std::to_string(index) +
+                    ", \"count\": " + std::to_string(l.points.size()) +
                     ", \"closed\": " + (l.closed ? "true" : "false") + "}";
         for (const Point& p : l.points) {
             out += (index++ > 0 ? ", [" : "[") + json_number(p.x) + ", " + json_number(p.y) + "]";

@@ -103,7 +103,8 @@ int main(int argc, char** argv) {
     const auto spline_pieces = spline.to_beziers();
     Bezier high;
     high.degree = 6;
-    const Point hp[] = {{10, 150}, {30, -60}, {90, 250}, {130, -80}, {170, 250}, {220, -40}, {240, 150}};
+    const Point hp[] = {{10, 150},  {30, -60},  {90, 250}, {130, -80},
+                        {170, 250}, {220, -40}, {240, 150}};
     std::copy(std::begin(hp), std::end(hp), high.p.begin());
     const std::vector<Example> examples = {
         example("cubic S-curve", CubicBez{{10, 150}, {110, -80}, {140, 260}, {240, 30}}),

@@ -15,11 +15,9 @@
 // Wang's bound, computed inside the timed loop, as a renderer would).
 #include "casteljau/flatten/error.h"
 #include "casteljau/flatten/flatten.h"
-
 #include "corpus.h"
 
 #include <benchmark/benchmark.h>
-
 #include <string>
 #include <vector>
 
@@ -43,17 +41,26 @@ struct Prepared {
 template <class Sink>
 void flatten_one(const CubicBez& c, Method m, double tol, int best_n, Sink&& sink) {
     switch (m) {
-    case Method::Adaptive: flatten_adaptive(c, tol, sink); break;
-    case Method::Halving: flatten_halving(c, tol, sink); break;
-    case Method::UniformBest: flatten_uniform(c, best_n, sink); break;
-    case Method::UniformWang: flatten_uniform(c, wang_segments(c, tol), sink); break;
+    case Method::Adaptive:
+        flatten_adaptive(c, tol, sink);
+        break;
+    case Method::Halving:
+        flatten_halving(c, tol, sink);
+        break;
+    case Method::UniformBest:
+        flatten_uniform(c, best_n, sink);
+        break;
+    case Method::UniformWang:
+        flatten_uniform(c, wang_segments(c, tol), sink);
+        break;
     }
 }
 
 Prepared prepare(Method m, double tol) {
     Prepared p;
     for (const auto& [kind, c] : corpus()) {
-        const int n = m == Method::UniformBest ? best_uniform_segments(c, tol, wang_segments(c, tol)) : 0;
+        const int n =
+            m == Method::UniformBest ? best_uniform_segments(c, tol, wang_segments(c, tol)) : 0;
         p.best_n.push_back(n);
         std::vector<FlatVertex> v;
         flatten_one(c, m, tol, n, [&](const FlatVertex& x) { v.push_back(x); });
@@ -76,8 +83,7 @@ void BM_Flatten(benchmark::State& state, Method m, double tol) {
     }
     const double n = double(curves.size());
     using C = benchmark::Counter;
-    state.counters["ns_per_curve"] =
-        C(n * 1e-9, C::kIsIterationInvariantRate | C::kInvert);
+    state.counters["ns_per_curve"] = C(n * 1e-9, C::kIsIterationInvariantRate | C::kInvert);
     state.counters["segments_per_curve"] = p.segments / n;
     state.counters["Msegments_per_s"] = C(p.segments * 1e-6, C::kIsIterationInvariantRate);
     state.counters["max_error_px"] = p.max_error;
@@ -99,7 +105,8 @@ void BM_FlattenKind(benchmark::State& state, Method m, std::string kind) {
     for (auto _ : state) {
         double checksum = 0;
         for (std::size_t i = 0; i < curves.size(); ++i)
-            flatten_one(curves[i], m, tol, best_n[i], [&](const FlatVertex& v) { checksum += v.p.y; });
+            flatten_one(curves[i], m, tol, best_n[i],
+                        [&](const FlatVertex& v) { checksum += v.p.y; });
         benchmark::DoNotOptimize(checksum);
     }
     using C = benchmark::Counter;
@@ -110,12 +117,14 @@ void BM_FlattenKind(benchmark::State& state, Method m, std::string kind) {
 
 const int kRegistered = [] {
     for (double tol : kTolerances)
-        for (Method m : {Method::Adaptive, Method::UniformBest, Method::UniformWang, Method::Halving})
-            benchmark::RegisterBenchmark(
-                ("flatten/" + std::string(kNames[int(m)]) + "/tol:" + std::to_string(tol).substr(0, 4))
-                    .c_str(),
-                BM_Flatten, m, tol);
-    for (const char* kind : {"random", "quarter_circle", "s_curve", "loop", "near_cusp", "nearly_straight"})
+        for (Method m :
+             {Method::Adaptive, Method::UniformBest, Method::UniformWang, Method::Halving})
+            benchmark::RegisterBenchmark(("flatten/" + std::string(kNames[int(m)]) +
+                                          "/tol:" + std::to_string(tol).substr(0, 4))
+                                             .c_str(),
+                                         BM_Flatten, m, tol);
+    for (const char* kind :
+         {"random", "quarter_circle", "s_curve", "loop", "near_cusp", "nearly_straight"})
         for (Method m : {Method::Adaptive, Method::UniformBest})
             benchmark::RegisterBenchmark(
                 ("kind/" + std::string(kind) + "/" + kNames[int(m)]).c_str(), BM_FlattenKind, m,

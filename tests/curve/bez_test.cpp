@@ -1,7 +1,6 @@
 // Properties of the fixed-degree curves (Line, QuadBez, CubicBez), each test
 // run for every degree on seeded random control points.
 #include "casteljau/curve/bez.h"
-
 #include "check.h"
 #include "corpus.h"
 
@@ -60,7 +59,8 @@ TYPED_TEST(BezTest, SamplesLieInTheControlHull) {
         const TypeParam c = this->random(rng);
         const auto hull = testing::convex_hull({c.p.begin(), c.p.end()});
         for (double t = 0; t <= 1.0; t += 1.0 / 64)
-            EXPECT_LE(testing::distance_outside(hull, c.eval(t)), kEps) << "curve " << i << " t=" << t;
+            EXPECT_LE(testing::distance_outside(hull, c.eval(t)), kEps)
+                << "curve " << i << " t=" << t;
     }
 }
 
@@ -68,7 +68,7 @@ TYPED_TEST(BezTest, AffineInvariance) {
     testing::Rng rng(14);
     for (int i = 0; i < 200; ++i) {
         const TypeParam c = this->random(rng);
-        const Affine m{rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-3, 3),
+        const Affine m{rng.uniform(-3, 3), rng.uniform(-3, 3),   rng.uniform(-3, 3),
                        rng.uniform(-3, 3), rng.uniform(-50, 50), rng.uniform(-50, 50)};
         const TypeParam mc = c.transformed(m);
         for (double t = 0; t <= 1.0; t += 0.1) {

@@ -2,7 +2,6 @@
 // fixed-degree types, and through split, elevation and bounds.
 #include "casteljau/curve/bez.h"
 #include "casteljau/curve/bezier.h"
-
 #include "check.h"
 #include "corpus.h"
 
@@ -88,7 +87,8 @@ TEST(Bezier, DerivativesMatchFiniteDifferencesAtDegree6) {
         for (double t = 0.05; t < 1.0; t += 0.1) {
             const double h = 1e-5, h2 = 1e-4;
             const Vec2 fd = (b.eval(t + h) - b.eval(t - h)) / (2 * h);
-            const Vec2 fd2 = ((b.eval(t + h2) - b.eval(t)) - (b.eval(t) - b.eval(t - h2))) / (h2 * h2);
+            const Vec2 fd2 =
+                ((b.eval(t + h2) - b.eval(t)) - (b.eval(t) - b.eval(t - h2))) / (h2 * h2);
             EXPECT_NEAR(b.deriv(t).x, fd.x, 1e-4);
             EXPECT_NEAR(b.deriv(t).y, fd.y, 1e-4);
             EXPECT_NEAR(b.deriv2(t).x, fd2.x, 0.05) << t;

@@ -1,5 +1,4 @@
 #include "casteljau/curve/bspline.h"
-
 #include "corpus.h"
 
 #include <gtest/gtest.h>
@@ -17,7 +16,8 @@ std::vector<double> random_knots(testing::Rng& rng, int p, std::size_t n, bool c
     const std::size_t interior_end = clamped ? total - std::size_t(p) - 1 : total;
     while (t.size() < interior_end) {
         u += rng.uniform(0.2, 1.5);
-        const std::size_t mult = std::min<std::size_t>(std::size_t(rng.integer(1, p)), interior_end - t.size());
+        const std::size_t mult =
+            std::min<std::size_t>(std::size_t(rng.integer(1, p)), interior_end - t.size());
         t.insert(t.end(), mult, u);
     }
     if (clamped) t.insert(t.end(), std::size_t(p) + 1, u + rng.uniform(0.2, 1.5));
@@ -106,7 +106,8 @@ TEST(Nurbs, CircleRadiusIsExact) {
         const auto pieces = n.to_beziers();
         EXPECT_EQ(pieces.size(), 4u);
         for (const RationalBezier& b : pieces)
-            for (double t = 0; t <= 1.0; t += 0.01) EXPECT_NEAR(distance(b.eval(t), c), r, 1e-12 * 4);
+            for (double t = 0; t <= 1.0; t += 0.01)
+                EXPECT_NEAR(distance(b.eval(t), c), r, 1e-12 * 4);
     }
 }
 
@@ -115,7 +116,8 @@ TEST(Nurbs, RandomWeightsConvertAndInsertExactly) {
     for (int i = 0; i < 200; ++i) {
         const BSpline s = random_bspline(rng);
         Nurbs n{s.degree, s.points, {}, s.knots};
-        for (std::size_t k = 0; k < n.points.size(); ++k) n.weights.push_back(rng.log_uniform(0.1, 10));
+        for (std::size_t k = 0; k < n.points.size(); ++k)
+            n.weights.push_back(rng.log_uniform(0.1, 10));
         ASSERT_EQ(n.validate(), "");
         Nurbs inserted = n;
         inserted.insert_knot(rng.uniform(n.domain_start(), n.domain_end()));

@@ -2,12 +2,10 @@
 #include "casteljau/curve/arc.h"
 #include "casteljau/curve/conic.h"
 #include "casteljau/curve/path.h"
-
 #include "corpus.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
+#include <gtest/gtest.h>
 #include <numbers>
 
 namespace casteljau {
@@ -45,8 +43,8 @@ TEST(Conic, SplitSubsegmentAndDerivatives) {
         for (double s = 0.05; s < 1.0; s += 0.1) {
             const double eps = 1e-5, eps2 = 1e-3;
             const Vec2 fd = (c.eval(s + eps) - c.eval(s - eps)) / (2 * eps);
-            const Vec2 fd2 = ((c.eval(s + eps2) - c.eval(s)) - (c.eval(s) - c.eval(s - eps2))) /
-                             (eps2 * eps2);
+            const Vec2 fd2 =
+                ((c.eval(s + eps2) - c.eval(s)) - (c.eval(s) - c.eval(s - eps2))) / (eps2 * eps2);
             const double scale = 1 + c.deriv(s).length();
             EXPECT_NEAR(c.deriv(s).x, fd.x, 1e-5 * scale) << i;
             EXPECT_NEAR(c.deriv(s).y, fd.y, 1e-5 * scale) << i;
@@ -145,8 +143,12 @@ TEST(SvgArc, ZeroRadiusIsALineAndCoincidentEndsAreNothing) {
 TEST(SvgArc, ConicsLieOnTheEllipseAndCubicsClose) {
     testing::Rng rng(45);
     for (int i = 0; i < 200; ++i) {
-        const SvgArcInput in{rng.point(100), rng.point(100), {rng.uniform(1, 80), rng.uniform(1, 80)},
-                             rng.uniform(-180, 180), rng.integer(0, 1) == 1, rng.integer(0, 1) == 1};
+        const SvgArcInput in{rng.point(100),
+                             rng.point(100),
+                             {rng.uniform(1, 80), rng.uniform(1, 80)},
+                             rng.uniform(-180, 180),
+                             rng.integer(0, 1) == 1,
+                             rng.integer(0, 1) == 1};
         const EllipseArc arc = svg_arc(in);
         const Affine to_unit = arc.unit_circle_map().inverse();
         std::array<Conic, 4> conics;

@@ -16,14 +16,16 @@ std::vector<Point> ends(const Path& p) {
 
 Path parse_ok(std::string_view d) {
     PathDataResult r = parse_path_data(d);
-    EXPECT_FALSE(r.error) << "'" << d << "': offset " << r.error->offset << ": " << r.error->message;
+    EXPECT_FALSE(r.error) << "'" << d << "': offset " << r.error->offset << ": "
+                          << r.error->message;
     return std::move(r.path);
 }
 
 TEST(PathData, EveryCommandAbsoluteAndRelative) {
-    const Path p = parse_ok("M10 20 L30 20 H40 V30 C40 40 50 40 50 30 S60 20 60 30 Q70 40 80 30 "
-                            "T100 30 A10 10 0 0 1 120 30 Z "
-                            "m5 5 l10 0 h5 v5 c0 5 5 5 5 0 s5 -5 5 0 q5 5 10 0 t10 0 a5 5 0 0 0 10 0 z");
+    const Path p =
+        parse_ok("M10 20 L30 20 H40 V30 C40 40 50 40 50 30 S60 20 60 30 Q70 40 80 30 "
+                 "T100 30 A10 10 0 0 1 120 30 Z "
+                 "m5 5 l10 0 h5 v5 c0 5 5 5 5 0 s5 -5 5 0 q5 5 10 0 t10 0 a5 5 0 0 0 10 0 z");
     ASSERT_EQ(p.subpaths().size(), 2u);
     EXPECT_EQ(p.subpaths()[0].start, Point(10, 20));
     EXPECT_TRUE(p.subpaths()[0].closed);
@@ -45,7 +47,8 @@ TEST(PathData, CompactNumbersAndImplicitRepeats) {
     // "M1.5.5" is (1.5, .5); "-1-2" two numbers; exponents; a moveto's extra
     // pairs are linetos; a repeated command letter may be omitted.
     const Path p = parse_ok("M1.5.5 2-1e1 3E+0,4 L5 6 7 8l1 1-1-1");
-    EXPECT_EQ(ends(p), (std::vector<Point>{{1.5, 0.5}, {2, -10}, {3, 4}, {5, 6}, {7, 8}, {8, 9}, {7, 8}}));
+    EXPECT_EQ(ends(p),
+              (std::vector<Point>{{1.5, 0.5}, {2, -10}, {3, 4}, {5, 6}, {7, 8}, {8, 9}, {7, 8}}));
     const Path q = parse_ok("M0,0C1,1,2,2,3,3,4,4,5,5,6,6");
     EXPECT_EQ(q.segment_count(), 2u);
 }

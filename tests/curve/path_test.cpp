@@ -1,5 +1,4 @@
 #include "casteljau/curve/path.h"
-
 #include "corpus.h"
 
 #include <gtest/gtest.h>
@@ -11,7 +10,7 @@ TEST(Path, BuilderFollowsSvgSubpathRules) {
     Path p;
     p.line_to({10, 0}); // no move_to: starts at the origin
     p.quad_to({10, 10}, {0, 10});
-    p.close(); // adds the closing line back to (0, 0)
+    p.close();         // adds the closing line back to (0, 0)
     p.line_to({5, 5}); // after close: a new subpath from the old start
     ASSERT_EQ(p.subpaths().size(), 2u);
     const Subpath& a = p.subpaths()[0];
@@ -54,7 +53,7 @@ TEST(Path, TransformAndBounds) {
 TEST(Path, ContinuityOfConstructedJoints) {
     // Two cubics meeting at (10, 0); the second one's handles set each level.
     const CubicBez a{{0, 0}, {3, 4}, {7, -2}, {10, 0}};
-    const Vec2 d = a.p[3] - a.p[2];              // a'(1) / 3
+    const Vec2 d = a.p[3] - a.p[2];                        // a'(1) / 3
     const Vec2 dd = (a.p[3] - a.p[2]) - (a.p[2] - a.p[1]); // a''(1) / 6
     const Point j = a.p[3];
     // C2: b1 = j + d, b2 = j + 2d + dd (matching first and second derivatives).

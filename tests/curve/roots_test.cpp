@@ -1,13 +1,11 @@
 #include "casteljau/curve/roots.h"
-
 #include "corpus.h"
-
-#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
-#include <vector>
 #include <cmath>
+#include <gtest/gtest.h>
+#include <vector>
 
 namespace casteljau {
 namespace {
@@ -52,7 +50,8 @@ TEST(Roots, BernsteinRootsFindEveryRootOfRandomPolynomials) {
             coeff[j] = sum / count;
         }
         std::array<double, 6> found{};
-        const int k = bernstein_roots(std::span<const double>(coeff.data(), std::size_t(n) + 1), found);
+        const int k =
+            bernstein_roots(std::span<const double>(coeff.data(), std::size_t(n) + 1), found);
         ASSERT_EQ(k, n) << "case " << i;
         for (int j = 0; j < n; ++j) EXPECT_NEAR(found[j], roots[j], 1e-9) << "case " << i;
     }

@@ -2,7 +2,6 @@
 // the measured deviation, bounds must never be below it.
 #include "casteljau/flatten/error.h"
 #include "casteljau/flatten/flatness.h"
-
 #include "corpus.h"
 
 #include <gtest/gtest.h>
@@ -44,8 +43,10 @@ TEST(Flatness, ExactOnPiecesThatProjectInside) {
     for (int i = 0; i < 2000; ++i) {
         // Inner points between the ends: the exact form must apply.
         const Point a{0, 0}, b{100, 0};
-        const CubicBez c{{a, {rng.uniform(0, 100), rng.uniform(-30, 30)},
-                          {rng.uniform(0, 100), rng.uniform(-30, 30)}, b}};
+        const CubicBez c{{a,
+                          {rng.uniform(0, 100), rng.uniform(-30, 30)},
+                          {rng.uniform(0, 100), rng.uniform(-30, 30)},
+                          b}};
         EXPECT_NEAR(chord_deviation(c), measured(c), 1e-9) << i;
         const Conic k{a, {rng.uniform(0, 100), rng.uniform(-30, 30)}, b, rng.log_uniform(0.05, 20)};
         EXPECT_NEAR(chord_deviation(k), measured(k), 1e-9) << i;

@@ -3,11 +3,9 @@
 // segment-count targets of adaptive subdivision.
 #include "casteljau/flatten/error.h"
 #include "casteljau/flatten/flatten.h"
-
 #include "corpus.h"
 
 #include <gtest/gtest.h>
-
 #include <numbers>
 
 namespace casteljau {
@@ -21,7 +19,8 @@ struct Result {
 template <class C>
 Result run(const C& c, FlattenMethod m, double tol, int segments = 0) {
     Result r;
-    flatten_curve(c, FlattenOptions{tol, m, segments}, [&](const FlatVertex& v) { r.v.push_back(v); });
+    flatten_curve(c, FlattenOptions{tol, m, segments},
+                  [&](const FlatVertex& v) { r.v.push_back(v); });
     r.error = polyline_error(c, c.start(), r.v);
     return r;
 }
@@ -78,7 +77,8 @@ TEST(Flatten, DegenerateCurves) {
         {"handle on end", {{0, 0}, {50, 80}, {100, 0}, {100, 0}}},
         {"huge", {{0, 0}, {1e6, 2e6}, {2e6, -1e6}, {3e6, 0}}},
         {"tiny", {{0, 0}, {1e-3, 2e-3}, {2e-3, -1e-3}, {3e-3, 0}}},
-        {"far from origin", {{1e7, 1e7}, {1e7 + 100, 1e7 + 200}, {1e7 + 200, 1e7}, {1e7 + 300, 1e7}}},
+        {"far from origin",
+         {{1e7, 1e7}, {1e7 + 100, 1e7 + 200}, {1e7 + 200, 1e7}, {1e7 + 300, 1e7}}},
     };
     for (const auto& [name, c] : cases)
         for (FlattenMethod m : kMethods)
@@ -124,7 +124,8 @@ TEST(Flatten, NoSliverAtTheEndOfConstantCurvatureArcs) {
                 shortest = std::min(shortest, x.t - t), longest = std::max(longest, x.t - t);
                 t = x.t;
             }
-            EXPECT_LT(longest / shortest, 2.0) << "r " << r << " tol " << tol << " chords " << v.size();
+            EXPECT_LT(longest / shortest, 2.0)
+                << "r " << r << " tol " << tol << " chords " << v.size();
         }
     }
 }

@@ -38,8 +38,8 @@ TEST(PathFlatten, NonUniformTransformAndLinesPassThrough) {
 TEST(PathFlatten, MaxDepthReportsTheShortestStep) {
     const PathDataResult r = parse_path_data("M0 0 C 0 100 100 100 100 0");
     std::vector<Polyline> out;
-    const FlattenStats s = flatten_path(r.path, Affine::identity(),
-                                        {0.25, FlattenMethod::Uniform, 8}, out);
+    const FlattenStats s =
+        flatten_path(r.path, Affine::identity(), {0.25, FlattenMethod::Uniform, 8}, out);
     EXPECT_EQ(s.max_depth, 3); // steps of 1/8
     EXPECT_EQ(s.segments_out, 8u);
 }

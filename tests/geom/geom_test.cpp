@@ -1,10 +1,8 @@
 #include "casteljau/geom/affine.h"
 #include "casteljau/geom/rect.h"
-
 #include "corpus.h"
 
 #include <gtest/gtest.h>
-
 #include <numbers>
 #include <type_traits>
 
@@ -12,7 +10,9 @@ namespace casteljau {
 namespace {
 
 template <class A, class B>
-concept Addable = requires(A a, B b) { a + b; };
+concept Addable = requires(A a, B b) {
+    a + b;
+};
 
 TEST(Point, AffineAlgebraKeepsPointsAndVectorsApart) {
     static_assert(std::is_same_v<decltype(Point{} - Point{}), Vec2>);
@@ -54,8 +54,8 @@ TEST(Affine, VectorsIgnoreTranslationAndMaxScaleIsLargestStretch) {
     EXPECT_EQ(t * Vec2(1, 2), Vec2(1, 2));
     EXPECT_EQ(t * Point(1, 2), Point(6, 9));
     EXPECT_NEAR((Affine::rotate(0.3) * Affine::scale(3, 0.5)).max_scale(), 3.0, 1e-12);
-    EXPECT_NEAR(Affine::skew_x(std::numbers::pi / 4).max_scale(), std::sqrt((3 + std::sqrt(5.0)) / 2),
-                1e-12);
+    EXPECT_NEAR(Affine::skew_x(std::numbers::pi / 4).max_scale(),
+                std::sqrt((3 + std::sqrt(5.0)) / 2), 1e-12);
 }
 
 TEST(Rect, StaysOrderedAndEmptyIsTheUnionIdentity) {

@@ -1,10 +1,9 @@
 #include "casteljau/io/image_write.h"
 
 #include <OpenImageIO/imageio.h>
-#include <gtest/gtest.h>
-
 #include <filesystem>
 #include <fstream>
+#include <gtest/gtest.h>
 #include <vector>
 
 namespace casteljau {

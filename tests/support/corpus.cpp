@@ -49,10 +49,14 @@ std::vector<NamedCubic> cubic_corpus(unsigned seed, int per_kind) {
         const double j = rng.uniform(-0.3, 0.3); // jitter of the shapes' inner points
         out.push_back({"random", random_cubic(rng, rng.log_uniform(50, 800))});
         out.push_back({"quarter_circle", place(rng, {{{1, 0}, {1, k}, {k, 1}, {0, 1}}}, 50, 800)});
-        out.push_back({"s_curve", place(rng, {{{0, 0}, {0.5, 0.6 + j}, {0.5, -0.6 + j}, {1, 0}}}, 50, 800)});
+        out.push_back(
+            {"s_curve", place(rng, {{{0, 0}, {0.5, 0.6 + j}, {0.5, -0.6 + j}, {1, 0}}}, 50, 800)});
         out.push_back({"loop", place(rng, {{{0, 0}, {1.2 + j, 1}, {-0.2, 1}, {1, 0}}}, 50, 800)});
-        out.push_back({"near_cusp", place(rng, {{{0, 0}, {1, 1}, {0, 1 + 0.01 * j}, {1, 0.02 * j}}}, 50, 800)});
-        out.push_back({"nearly_straight", place(rng, {{{0, 0}, {0.3, 0.01 + 0.01 * j}, {0.7, -0.01}, {1, 0.005}}}, 200, 2000)});
+        out.push_back({"near_cusp",
+                       place(rng, {{{0, 0}, {1, 1}, {0, 1 + 0.01 * j}, {1, 0.02 * j}}}, 50, 800)});
+        out.push_back(
+            {"nearly_straight",
+             place(rng, {{{0, 0}, {0.3, 0.01 + 0.01 * j}, {0.7, -0.01}, {1, 0.005}}}, 200, 2000)});
     }
     return out;
 }
@@ -63,7 +67,8 @@ double optimal_segments(const CubicBez& c, double tolerance) {
         const Vec2 d1 = c.deriv(t), d2 = c.deriv2(t);
         const double speed = d1.length();
         if (speed == 0.0) return 0.0;
-        return std::sqrt(std::fabs(d1.cross(d2)) / (speed * speed * speed) / (8 * tolerance)) * speed;
+        return std::sqrt(std::fabs(d1.cross(d2)) / (speed * speed * speed) / (8 * tolerance)) *
+               speed;
     };
     const auto simpson = [&](double a, double b, double fa, double fm, double fb) {
         return (b - a) / 6 * (fa + 4 * fm + fb);
@@ -75,7 +80,8 @@ double optimal_segments(const CubicBez& c, double tolerance) {
             const double left = simpson(a, m, fa, flm, fm), right = simpson(m, b, fm, frm, fb);
             if (depth > 30 || std::fabs(left + right - whole) < 1e-9)
                 return left + right + (left + right - whole) / 15;
-            return rec(a, m, fa, flm, fm, left, depth + 1) + rec(m, b, fm, frm, fb, right, depth + 1);
+            return rec(a, m, fa, flm, fm, left, depth + 1) +
+                   rec(m, b, fm, frm, fb, right, depth + 1);
         };
     const double fa = f(0), fm = f(0.5), fb = f(1);
     return rec(0, 1, fa, fm, fb, simpson(0, 1, fa, fm, fb), 0);

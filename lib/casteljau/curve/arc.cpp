@@ -92,7 +92,10 @@ int arc_pieces(const SvgArcInput& in, std::array<Piece, 4>& out, Make make, Pin 
 
 int svg_arc_to_conics(const SvgArcInput& in, std::array<Conic, 4>& out) {
     return arc_pieces(
-        in, out, [](double a0, double a1) { return Conic::circular_arc({0, 0}, 1.0, a0, a1); },
+        in, out,
+        [](double a0, double a1) {
+            return Conic::circular_arc({0, 0}, 1.0, a0, a1);
+        },
         [&](Conic& first, Conic& last) { first.p0 = in.from, last.p2 = in.to; });
 }
 

@@ -33,8 +33,8 @@ struct SvgArcInput {
 struct EllipseArc {
     enum class Kind { Arc, Line, Nothing } kind = Kind::Arc;
     Point center;
-    Vec2 radii;                 // corrected radii, both > 0 for an Arc
-    double x_rotation = 0;      // radians
+    Vec2 radii;                    // corrected radii, both > 0 for an Arc
+    double x_rotation = 0;         // radians
     double theta1 = 0, dtheta = 0; // radians; dtheta > 0 runs in the positive-angle direction
     Affine unit_circle_map() const;
 };

@@ -38,15 +38,9 @@ struct Bez {
 
     constexpr Bez() = default;
     constexpr Bez(const std::array<Point, N + 1>& pts) : p(pts) {}
-    constexpr Bez(Point a, Point b)
-        requires(N == 1)
-        : p{a, b} {}
-    constexpr Bez(Point a, Point b, Point c)
-        requires(N == 2)
-        : p{a, b, c} {}
-    constexpr Bez(Point a, Point b, Point c, Point d)
-        requires(N == 3)
-        : p{a, b, c, d} {}
+    constexpr Bez(Point a, Point b) requires(N == 1) : p{a, b} {}
+    constexpr Bez(Point a, Point b, Point c) requires(N == 2) : p{a, b, c} {}
+    constexpr Bez(Point a, Point b, Point c, Point d) requires(N == 3) : p{a, b, c, d} {}
 
     constexpr Point start() const { return p[0]; }
     constexpr Point end() const { return p[N]; }
@@ -91,9 +85,7 @@ struct Bez {
         decasteljau_subsegment(points(), t0, t1, std::span<Point, N + 1>(s.p));
         return s;
     }
-    constexpr Bez<N + 1> elevate() const
-        requires(N < 3)
-    {
+    constexpr Bez<N + 1> elevate() const requires(N < 3) {
         Bez<N + 1> e{};
         elevate_degree(points(), e.p);
         return e;

@@ -125,7 +125,8 @@ Nurbs Nurbs::circle(Point center, double radius) {
     const double s = std::numbers::sqrt2 / 2;
     Nurbs c;
     c.degree = 2;
-    const Vec2 offsets[9] = {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}, {1, 0}};
+    const Vec2 offsets[9] = {{1, 0},   {1, 1},  {0, 1},  {-1, 1}, {-1, 0},
+                             {-1, -1}, {0, -1}, {1, -1}, {1, 0}};
     for (int i = 0; i < 9; ++i) {
         c.points.push_back(center + offsets[i] * radius);
         c.weights.push_back(i % 2 ? s : 1.0);
@@ -146,7 +147,9 @@ std::string Nurbs::validate() const {
     return validate_points(points);
 }
 
-Point Nurbs::eval(double u) const { return de_boor(homogeneous(*this), knots, degree, u).project(); }
+Point Nurbs::eval(double u) const {
+    return de_boor(homogeneous(*this), knots, degree, u).project();
+}
 
 void Nurbs::insert_knot(double u) {
     std::vector<HPoint> h = homogeneous(*this);

@@ -59,7 +59,8 @@ struct HConic {
     }
     // The same curve in standard form (end weights 1).
     Conic standard() const {
-        return {h[0].project(), h[1].project(), h[2].project(), h[1].w / std::sqrt(h[0].w * h[2].w)};
+        return {h[0].project(), h[1].project(), h[2].project(),
+                h[1].w / std::sqrt(h[0].w * h[2].w)};
     }
     std::array<HConic, 2> split(double t) const {
         std::array<HConic, 2> r{};

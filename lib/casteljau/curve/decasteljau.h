@@ -73,10 +73,10 @@ constexpr void decasteljau_subsegment(std::span<const T, E> p, double t0, double
     std::span<T, E> sa(a.data(), n), sb(b.data(), n);
     const double lo = t0 < t1 ? t0 : t1, hi = t0 < t1 ? t1 : t0;
     if (hi < 0.5) {
-        decasteljau_split(p, lo, sa, sb);                                   // sb = [lo, 1]
+        decasteljau_split(p, lo, sa, sb); // sb = [lo, 1]
         decasteljau_split(std::span<const T, E>(sb), (hi - lo) / (1.0 - lo), out, sa);
     } else {
-        decasteljau_split(p, hi, sa, sb);                                   // sa = [0, hi]
+        decasteljau_split(p, hi, sa, sb); // sa = [0, hi]
         decasteljau_split(std::span<const T, E>(sa), lo / hi, sb, out);
     }
     if (t0 > t1)

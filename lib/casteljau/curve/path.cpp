@@ -70,11 +70,16 @@ Vec2 segment_end_tangent(const Segment& s) { return segment_tangent(s, false); }
 
 const char* to_string(Continuity c) {
     switch (c) {
-    case Continuity::None: return "none";
-    case Continuity::C0: return "C0";
-    case Continuity::G1: return "G1";
-    case Continuity::C1: return "C1";
-    case Continuity::C2: return "C2";
+    case Continuity::None:
+        return "none";
+    case Continuity::C0:
+        return "C0";
+    case Continuity::G1:
+        return "G1";
+    case Continuity::C1:
+        return "C1";
+    case Continuity::C2:
+        return "C2";
     }
     return "?";
 }

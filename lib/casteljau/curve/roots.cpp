@@ -89,7 +89,8 @@ int bernstein_roots(std::span<const double> coeff, std::span<double> out) noexce
         Piece& left = stack[top++];
         const double mid = 0.5 * (p.t0 + p.t1);
         decasteljau_split(std::span<const Scalar>(p.c.data(), n), 0.5,
-                          std::span<Scalar>(left.c.data(), n), std::span<Scalar>(right.c.data(), n));
+                          std::span<Scalar>(left.c.data(), n),
+                          std::span<Scalar>(right.c.data(), n));
         left.t0 = p.t0, left.t1 = mid, left.depth = p.depth + 1;
         right.t0 = mid, right.t1 = p.t1, right.depth = p.depth + 1;
     }

@@ -31,8 +31,12 @@ inline HConic subdivision_form(const Conic& c) { return HConic::from(c); }
 template <class Curve, class Sink>
 void flatten_curve(const Curve& c, const FlattenOptions& o, Sink&& sink) {
     switch (o.method) {
-    case FlattenMethod::Adaptive: flatten_adaptive(subdivision_form(c), o.tolerance, sink); break;
-    case FlattenMethod::Halving: flatten_halving(subdivision_form(c), o.tolerance, sink); break;
+    case FlattenMethod::Adaptive:
+        flatten_adaptive(subdivision_form(c), o.tolerance, sink);
+        break;
+    case FlattenMethod::Halving:
+        flatten_halving(subdivision_form(c), o.tolerance, sink);
+        break;
     case FlattenMethod::Uniform:
         flatten_uniform(c, o.segments > 0 ? o.segments : wang_segments(c, o.tolerance), sink);
         break;

@@ -40,8 +40,8 @@ FlattenStats flatten_path(const Path& path, const Affine& to_device, const Flatt
                         if (measure_error) scratch.push_back(v);
                     });
                     if (measure_error)
-                        stats.max_error = std::max(
-                            stats.max_error, polyline_error(dev, dev.start(), scratch));
+                        stats.max_error =
+                            std::max(stats.max_error, polyline_error(dev, dev.start(), scratch));
                 },
                 seg);
         }

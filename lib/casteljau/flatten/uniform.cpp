@@ -41,8 +41,8 @@ int wang_segments(const RationalBezier& c, double tolerance) {
     // Start the doubling search from the polynomial bound of the control polygon.
     std::array<Point, kMaxPoints> p;
     for (int i = 0; i <= c.degree; ++i) p[i] = c.control_point(i);
-    const int guess = wang_segments(std::span<const Point>(p.data(), std::size_t(c.degree) + 1),
-                                    tolerance);
+    const int guess =
+        wang_segments(std::span<const Point>(p.data(), std::size_t(c.degree) + 1), tolerance);
     return best_uniform_segments(c, tolerance, guess);
 }
 

@@ -30,8 +30,8 @@ struct Affine {
     }
     constexpr Vec2 operator*(Vec2 v) const { return {a * v.x + c * v.y, b * v.x + d * v.y}; }
     constexpr Affine operator*(const Affine& m) const {
-        return {a * m.a + c * m.b,     b * m.a + d * m.b,     a * m.c + c * m.d,
-                b * m.c + d * m.d,     a * m.e + c * m.f + e, b * m.e + d * m.f + f};
+        return {a * m.a + c * m.b, b * m.a + d * m.b,     a * m.c + c * m.d,
+                b * m.c + d * m.d, a * m.e + c * m.f + e, b * m.e + d * m.f + f};
     }
     constexpr bool operator==(const Affine&) const = default;
 

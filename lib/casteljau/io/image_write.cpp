@@ -1,7 +1,6 @@
 #include "casteljau/io/image_write.h"
 
 #include <OpenImageIO/imageio.h>
-
 #include <filesystem>
 #include <memory>
 #include <system_error>

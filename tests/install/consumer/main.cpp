@@ -1,7 +1,6 @@
 // A tiny application built against the installed package.
 #include <casteljau/curve/path_data.h>
 #include <casteljau/flatten/path_flatten.h>
-
 #include <cstdio>
 
 int main() {
