@@ -1,0 +1,45 @@
+#include "casteljau/raster/accumulate.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace casteljau {
+
+void CoverageRow::reset(int width) {
+    width_ = width;
+    acc_.assign(std::size_t(width) + 2, 0.0f);
+    clear_range();
+}
+
+void CoverageRow::touch(int i0, int i1) {
+    begin_ = std::min(begin_, i0);
+    end_ = std::max(end_, i1);
+}
+
+void CoverageRow::add_segment(float xa, float ya, float xb, float yb, float dir) {
+    const float h = (yb - ya) * dir;
+    if (xa == xb) {
+        const int i = std::min(int(xa), width_);
+        const float frac = xa - float(i);
+        acc_[std::size_t(i)] += h * (1.0f - frac);
+        acc_[std::size_t(i) + 1] += h * frac;
+        touch(i, i + 2);
+        return;
+    }
+    const float x_left = std::min(xa, xb), x_right = std::max(xa, xb);
+    const float h_per_x = h / (x_right - x_left);
+    const int first = std::min(int(x_left), width_), last = std::min(int(x_right), width_);
+    float passed = 0, prev = 0; // sum of h_j for j < i; c_{i-1}
+    for (int i = first; i <= last; ++i) {
+        const float s0 = std::max(x_left, float(i)), s1 = std::min(x_right, float(i + 1));
+        const float hi = (s1 - s0) * h_per_x;
+        const float c = passed + hi * (float(i + 1) - 0.5f * (s0 + s1));
+        acc_[std::size_t(i)] += c - prev;
+        prev = c;
+        passed += hi;
+    }
+    acc_[std::size_t(last) + 1] += h - prev;
+    touch(first, last + 2);
+}
+
+} // namespace casteljau

@@ -1,0 +1,51 @@
+// Exact-area coverage accumulation for one scanline (the scheme of libart,
+// FreeType's smooth rasterizer and font-rs).
+//
+// For a row of unit-height pixels and a shape bounded by directed edges, the
+// signed coverage of pixel i is c_i = sum over edges of
+//     dir * integral over the edge's y-extent in the row of clamp(i + 1 - x(y), 0, 1) dy,
+// the area of the pixel lying to the right of the edge, signed by the edge's
+// direction; summed over a closed outline this is the integral of the winding
+// number over the pixel. The row buffer stores first differences
+// acc[i] = c_i - c_{i-1}, so an edge touches only the columns it crosses plus
+// one, and a running sum (sweep.h) recovers c_i for the whole row.
+//
+// Per column i that the edge crosses, with the edge's part in the column
+// spanning x in [s0, s1] and height h_i (h / dx per unit of x):
+//     c_i = dir * (sum_{j < i} h_j + h_i * (i + 1 - (s0 + s1) / 2)),
+// the first term being the full-width coverage of the rows of the edge that
+// passed left of the column, the second the trapezoid right of the edge
+// inside it; after the last column c = dir * h. Vertical edges are the
+// one-column case. The arithmetic is float: coordinates are below 2^14.
+#pragma once
+
+#include "casteljau/raster/edge.h"
+
+#include <vector>
+
+namespace casteljau {
+
+class CoverageRow {
+  public:
+    // A zeroed row for `width` pixels; the storage is kept across calls.
+    void reset(int width);
+
+    // Adds a segment lying inside the row: 0 <= ya < yb <= 1 in row-local y,
+    // 0 <= x <= width. `dir` is the edge's winding direction.
+    void add_segment(float xa, float ya, float xb, float yb, float dir);
+
+    // The touched columns are [begin(), end()); empty when begin() >= end().
+    int begin() const { return begin_; }
+    int end() const { return end_; }
+    float* data() { return acc_.data(); }
+    int width() const { return width_; }
+    // Forgets the touched range after a sweep has zeroed it.
+    void clear_range() { begin_ = width_ + 1, end_ = 0; }
+
+  private:
+    void touch(int i0, int i1);
+    std::vector<float> acc_; // width + 2 entries: an edge at x = width writes acc[width + 1]
+    int width_ = 0, begin_ = 0, end_ = 0;
+};
+
+} // namespace casteljau

@@ -1,0 +1,103 @@
+#include "casteljau/raster/path_edges.h"
+
+#include "casteljau/flatten/error.h"
+
+#include <algorithm>
+#include <array>
+
+namespace casteljau {
+
+namespace {
+
+Rect control_box(const Conic& c) { return Rect::from_points(c.p0, c.p2).united(c.p1); }
+template <int N>
+Rect control_box(const Bez<N>& c) {
+    return c.control_bounds();
+}
+
+struct EdgeEmitter {
+    EdgeList& edges;
+    const FlattenOptions& options;
+    FlattenStats& stats;
+    bool measure;
+    std::vector<FlatVertex> scratch;
+
+    template <class Curve>
+    void flatten(const Curve& c) {
+        Point a = c.start();
+        scratch.clear();
+        flatten_curve(c, options, [&](const FlatVertex& v) {
+            edges.add_line(a, v.p);
+            a = v.p;
+            ++stats.segments_out;
+            if (measure) scratch.push_back(v);
+        });
+        if (measure)
+            stats.max_error = std::max(stats.max_error, polyline_error(c, c.start(), scratch));
+    }
+
+    template <class Curve>
+    void cull_and_flatten(const Curve& curve) {
+        const double w = edges.width(), h = edges.height();
+        // Pieces up to a few canvas sizes are flattened whole: culling them
+        // further would cost more splits than the segments it saves.
+        const double small = 4.0 * std::max(w, h);
+        struct Piece {
+            Curve c;
+            int depth;
+        };
+        std::array<Piece, kCullDepth + 1> stack;
+        int top = 0;
+        stack[top++] = {curve, 0};
+        while (top > 0) {
+            const Piece p = stack[--top];
+            const Rect box = control_box(p.c);
+            if (box.y1 <= 0 || box.y0 >= h || box.x0 >= w) continue;
+            if (box.x1 <= 0) {
+                edges.add_line(p.c.start(), p.c.end());
+                ++stats.segments_out;
+                continue;
+            }
+            const bool inside = box.x0 >= 0 && box.y0 >= 0 && box.x1 <= w && box.y1 <= h;
+            if (inside || p.depth == kCullDepth ||
+                (box.width() <= small && box.height() <= small)) {
+                flatten(p.c);
+                continue;
+            }
+            const auto halves = p.c.split(0.5);
+            stack[top++] = {halves[1], p.depth + 1};
+            stack[top++] = {halves[0], p.depth + 1};
+        }
+    }
+};
+
+} // namespace
+
+FlattenStats add_path_edges(const Path& path, const Affine& to_device,
+                            const FlattenOptions& options, EdgeList& edges, bool measure_error) {
+    FlattenStats stats;
+    EdgeEmitter emit{edges, options, stats, measure_error, {}};
+    for (const Subpath& sub : path.subpaths()) {
+        for (const Segment& seg : sub.segments) {
+            ++stats.curves_in;
+            std::visit(
+                [&](const auto& c) {
+                    const auto dev = c.transformed(to_device);
+                    if constexpr (std::is_same_v<std::decay_t<decltype(dev)>, Line>) {
+                        edges.add_line(dev.start(), dev.end());
+                        ++stats.segments_out;
+                    } else {
+                        emit.cull_and_flatten(dev);
+                    }
+                },
+                seg);
+        }
+        if (!sub.closed && !sub.segments.empty()) {
+            const Point last = segment_end(sub.segments.back());
+            if (last != sub.start) edges.add_line(to_device * last, to_device * sub.start);
+        }
+    }
+    return stats;
+}
+
+} // namespace casteljau

@@ -1,0 +1,71 @@
+#include "casteljau/raster/rasterizer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace casteljau {
+
+void Rasterizer::fill(const EdgeList& edges, FillRule rule, bool antialias, SpanSink& sink) {
+    width_ = edges.width();
+    const int height = edges.height();
+    sorted_.clear();
+    for (const Edge& e : edges.edges())
+        sorted_.push_back({e.x0, e.y0, e.y1, (e.x1 - e.x0) / (e.y1 - e.y0), e.dir});
+    if (sorted_.empty() || width_ <= 0) return;
+    std::sort(sorted_.begin(), sorted_.end(),
+              [](const Active& a, const Active& b) { return a.y0 < b.y0; });
+    if (antialias && row_.width() != width_) row_.reset(width_);
+    active_.clear();
+    std::size_t next = 0;
+    int y = std::max(0, int(sorted_[0].y0));
+    while (y < height && (next < sorted_.size() || !active_.empty())) {
+        if (active_.empty()) y = std::max(y, int(sorted_[next].y0)); // skip empty rows
+        const float bottom = float(y + 1);
+        while (next < sorted_.size() && sorted_[next].y0 < bottom)
+            active_.push_back(sorted_[next++]);
+        if (antialias)
+            row_antialiased(y, rule, sink);
+        else
+            row_aliased(y, rule, sink);
+        // Retire edges that end in this row.
+        std::erase_if(active_, [bottom](const Active& a) { return a.y1 <= bottom; });
+        ++y;
+    }
+}
+
+void Rasterizer::row_antialiased(int y, FillRule rule, SpanSink& sink) {
+    const float top = float(y), bottom = float(y + 1);
+    for (const Active& a : active_) {
+        const float ya = std::max(a.y0, top), yb = std::min(a.y1, bottom);
+        if (!(ya < yb)) continue;
+        const float xa = a.x0 + (ya - a.y0) * a.dxdy, xb = a.x0 + (yb - a.y0) * a.dxdy;
+        const float w = float(width_);
+        row_.add_segment(std::clamp(xa, 0.0f, w), ya - top, std::clamp(xb, 0.0f, w), yb - top,
+                         a.dir);
+    }
+    sweep_row(row_, y, rule, coverage_, sink);
+}
+
+void Rasterizer::row_aliased(int y, FillRule rule, SpanSink& sink) {
+    const float yc = float(y) + 0.5f;
+    crossings_.clear();
+    for (const Active& a : active_)
+        if (a.y0 <= yc && yc < a.y1) crossings_.push_back({a.x0 + (yc - a.y0) * a.dxdy, a.dir});
+    std::sort(crossings_.begin(), crossings_.end(),
+              [](const Crossing& a, const Crossing& b) { return a.x < b.x; });
+    if (coverage_.size() < std::size_t(width_)) coverage_.resize(std::size_t(width_));
+    std::fill(coverage_.begin(), coverage_.begin() + width_, 1.0f);
+    float winding = 0;
+    for (std::size_t i = 0; i < crossings_.size(); ++i) {
+        winding += crossings_[i].dir;
+        if (apply_fill_rule(winding, rule) < 0.5f) continue;
+        // Pixels whose centre x + 1/2 lies in [x_i, x_{i+1}); past the last
+        // crossing (an outline culled at the right border) up to the row's end.
+        const float next = i + 1 < crossings_.size() ? crossings_[i + 1].x : float(width_) + 1.0f;
+        const int x0 = std::max(0, int(std::ceil(crossings_[i].x - 0.5f)));
+        const int x1 = std::min(width_, int(std::ceil(next - 0.5f)));
+        if (x1 > x0) sink.span({y, x0, x1 - x0, coverage_.data() + x0});
+    }
+}
+
+} // namespace casteljau

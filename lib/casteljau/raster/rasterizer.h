@@ -1,0 +1,45 @@
+// The scanline driver: edges -> per-row accumulation -> sweep -> spans.
+//
+// Edges are sorted by their top once; rows are visited top to bottom with an
+// active list of the edges crossing the row, and rows without edges are
+// skipped, so the cost is O(E log E + sum over rows of (active edges + swept
+// columns)): it grows with the outline and the covered spans, never with the
+// canvas area. All buffers are kept between calls.
+//
+// Antialiased mode deposits exact areas (accumulate.h). Aliased mode samples
+// each pixel at its centre: a pixel is inside when the fill rule holds for the
+// winding number at (x + 1/2, y + 1/2), found by crossing the row's centre line
+// with the edges; its spans have coverage 1.
+#pragma once
+
+#include "casteljau/raster/accumulate.h"
+#include "casteljau/raster/edge.h"
+#include "casteljau/raster/span.h"
+#include "casteljau/raster/sweep.h"
+
+#include <vector>
+
+namespace casteljau {
+
+class Rasterizer {
+  public:
+    void fill(const EdgeList& edges, FillRule rule, bool antialias, SpanSink& sink);
+
+  private:
+    struct Active {
+        float x0, y0, y1, dxdy, dir;
+    };
+    struct Crossing {
+        float x, dir;
+    };
+    void row_antialiased(int y, FillRule rule, SpanSink& sink);
+    void row_aliased(int y, FillRule rule, SpanSink& sink);
+
+    std::vector<Active> sorted_, active_;
+    std::vector<Crossing> crossings_;
+    std::vector<float> coverage_;
+    CoverageRow row_;
+    int width_ = 0;
+};
+
+} // namespace casteljau

@@ -1,0 +1,50 @@
+#include "casteljau/raster/sweep.h"
+
+#include <algorithm>
+
+namespace casteljau {
+
+namespace {
+// Coverage below this is invisible in any 8-bit or half-float output; runs of
+// it (the inside of holes, where float sums cancel to ~1e-7) are not emitted.
+constexpr float kInvisible = 1e-6f;
+} // namespace
+
+void sweep_row(CoverageRow& row, int y, FillRule rule, std::vector<float>& scratch,
+               SpanSink& sink) {
+    const int begin = row.begin();
+    int end = std::min(row.end(), row.width());
+    if (begin >= end) {
+        if (row.begin() < row.end())
+            std::fill(row.data() + row.begin(), row.data() + row.end(), 0.0f);
+        row.clear_range();
+        return;
+    }
+    if (scratch.size() < std::size_t(row.width())) scratch.resize(std::size_t(row.width()));
+    float* acc = row.data();
+    float* cov = scratch.data();
+    float s = 0;
+    for (int i = begin; i < end; ++i) {
+        s += acc[i];
+        acc[i] = 0;
+        cov[i] = apply_fill_rule(s, rule);
+    }
+    std::fill(acc + end, acc + row.end(), 0.0f);
+    row.clear_range();
+    // Outlines culled or clamped at the right border leave the winding
+    // nonzero past the last touched column: it holds up to the row's end.
+    const float rest = apply_fill_rule(s, rule);
+    if (rest >= kInvisible) {
+        std::fill(cov + end, cov + row.width(), rest);
+        end = row.width();
+    }
+    int i = begin;
+    while (i < end) {
+        while (i < end && cov[i] < kInvisible) ++i;
+        const int start = i;
+        while (i < end && cov[i] >= kInvisible) ++i;
+        if (i > start) sink.span({y, start, i - start, cov + start});
+    }
+}
+
+} // namespace casteljau
