@@ -15,5 +15,6 @@ inline constexpr int kExitBadInput = 2;
 using Command = std::function<int()>;
 
 Command add_flatten_command(CLI::App& app);
+Command add_render_command(CLI::App& app);
 
 } // namespace casteljau::cli

@@ -9,6 +9,7 @@ int main(int argc, char** argv) {
     CLI::App app{"casteljau: exact, adaptive de Casteljau flattening and rendering of curves"};
     app.require_subcommand(1);
     const Command flatten = add_flatten_command(app);
+    const Command render = add_render_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
     }
     try {
         if (app.got_subcommand("flatten")) return flatten();
+        if (app.got_subcommand("render")) return render();
     } catch (const std::exception& e) {
         std::fprintf(stderr, "casteljau: %s\n", e.what());
         return kExitFailure;

@@ -9,6 +9,7 @@ packages=(
   libopenimageio-dev openimageio-tools
   libgtest-dev libgmock-dev libbenchmark-dev
   libpugixml-dev libcli11-dev
+  librsvg2-bin python3
 )
 
 missing=()

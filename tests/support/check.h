@@ -4,8 +4,14 @@
 
 #include "casteljau/geom/point.h"
 
+#include <ostream>
 #include <span>
 #include <vector>
+
+namespace casteljau {
+// gtest prints points as coordinates instead of bytes.
+inline void PrintTo(const Point& p, std::ostream* os) { *os << "(" << p.x << ", " << p.y << ")"; }
+} // namespace casteljau
 
 namespace casteljau::testing {
 

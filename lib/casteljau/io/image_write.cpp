@@ -34,12 +34,14 @@ std::string write_image_atomic(const std::string& path, const ImageView& image) 
     auto out = OIIO::ImageOutput::create(tmp.string());
     if (!out) return path + ": no image writer for '" + ext + "' (" + OIIO::geterror() + ")";
     const OIIO::TypeDesc type = wants_float(ext) ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-    OIIO::ImageSpec spec(image.width, image.height, 4, type);
-    spec.attribute("oiio:ColorSpace", wants_float(ext) ? "Linear" : "sRGB");
+    const bool jpeg = ext == ".jpg" || ext == ".jpeg" || ext == ".JPG" || ext == ".JPEG";
+    // JPEG has no alpha channel: its three channels are read with a 4-float stride.
+    OIIO::ImageSpec spec(image.width, image.height, jpeg ? 3 : 4, type);
+    spec.attribute("oiio:ColorSpace", ext == ".exr" || ext == ".EXR" ? "Linear" : "sRGB");
     std::string error;
     if (!out->open(tmp.string(), spec)) {
         error = path + ": cannot write: " + out->geterror();
-    } else if (!out->write_image(OIIO::TypeDesc::FLOAT, image.rgba.data())) {
+    } else if (!out->write_image(OIIO::TypeDesc::FLOAT, image.rgba.data(), 4 * sizeof(float))) {
         error = path + ": write failed: " + out->geterror();
     }
     if (!out->close() && error.empty()) error = path + ": write failed: " + out->geterror();

@@ -2,7 +2,7 @@
 //
 // The format follows the file extension (png, tif/tiff, exr, jpg/jpeg; anything
 // else OpenImageIO knows). 8-bit formats get the values quantised with
-// rounding; EXR and TIFF are written as 32-bit float. The image goes to a
+// rounding; EXR and TIFF are written as 32-bit float; JPEG gets RGB only. The image goes to a
 // temporary file in the destination's folder (same extension, so OpenImageIO
 // picks the same writer), which is renamed over the destination only once
 // complete: a failed or interrupted write never leaves a damaged or partial

@@ -1,0 +1,233 @@
+// `casteljau render IN.svg... -o OUT [--width W | --height H | --scale S] [--tolerance PX]
+//   [--flatten adaptive|uniform] [--segments N] [--antialias on|off] [--background COLOR]
+//   [--threads N] [--repeat N] [--stats FILE|-]`
+//
+// One input renders to OUT (format from its extension); several inputs, or an
+// OUT ending in '/', render into that folder as NAME.png. --stats writes one
+// JSON object per input (one per line), with the stage times as medians over
+// --repeat renders of the already parsed scene.
+#include "casteljau/io/canvas_write.h"
+#include "casteljau/render/renderer.h"
+#include "casteljau/svg/color.h"
+#include "casteljau/svg/reader.h"
+#include "commands.h"
+#include "json.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <thread>
+#include <unistd.h>
+
+namespace casteljau::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+// Output limits: each side at most 16384 px, and at most 2^26 pixels in all
+// (64 Mpx: a 1 GiB float canvas), checked before anything is allocated.
+constexpr int kMaxSide = 16384;
+constexpr double kMaxPixels = double(1 << 26);
+constexpr int kMaxRepeat = 100000;
+
+struct RenderArgs {
+    std::vector<std::string> inputs;
+    std::string output;
+    double width = 0, height = 0, scale = 0;
+    double tolerance = 0.25;
+    FlattenMethod method = FlattenMethod::Adaptive;
+    int segments = 0;
+    bool antialias = true;
+    std::string background;
+    int threads = 0;
+    int repeat = 1;
+    std::string stats;
+};
+
+double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+struct Outcome {
+    int status = kExitOk;
+    std::string stats_json;
+};
+
+Outcome render_one(const RenderArgs& a, const std::string& input, const std::string& output,
+                   Premul background, Renderer& renderer, Canvas& canvas) {
+    Outcome out;
+    const auto t0 = Clock::now();
+    const SvgResult doc = read_svg_file(input);
+    for (const std::string& w : doc.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    if (!doc.scene) {
+        std::fprintf(stderr, "error: %s\n", doc.error.c_str());
+        out.status = doc.io_error ? kExitFailure : kExitBadInput;
+        return out;
+    }
+    const Scene& scene = *doc.scene;
+    const double parse_ms = ms(Clock::now() - t0);
+    const double s = a.scale > 0    ? a.scale
+                     : a.width > 0  ? a.width / scene.width
+                     : a.height > 0 ? a.height / scene.height
+                                    : 1.0;
+    const double w = std::ceil(scene.width * s - 1e-9), h = std::ceil(scene.height * s - 1e-9);
+    if (!(w >= 1 && h >= 1 && w <= kMaxSide && h <= kMaxSide && w * h <= kMaxPixels)) {
+        std::fprintf(
+            stderr,
+            "error: %s: output size %.0f x %.0f px is outside the limits (1 to %d px a side, "
+            "at most %.0f pixels)\n",
+            input.c_str(), w, h, kMaxSide, kMaxPixels);
+        out.status = kExitBadInput;
+        return out;
+    }
+    const RenderOptions options{{a.tolerance, a.method, a.segments}, a.antialias, false};
+    std::vector<double> flatten_ms, raster_ms, frame_ms;
+    RenderStats stats;
+    for (int i = 0; i < a.repeat; ++i) {
+        const auto f0 = Clock::now();
+        canvas.reset(int(w), int(h));
+        if (background.a > 0) canvas.fill(background);
+        stats = renderer.render(scene, Affine::scale(s), canvas, options);
+        frame_ms.push_back(ms(Clock::now() - f0));
+        flatten_ms.push_back(stats.flatten_ms);
+        raster_ms.push_back(stats.raster_ms);
+    }
+    const auto e0 = Clock::now();
+    const std::string err = write_canvas_atomic(output, canvas);
+    const double encode_ms = ms(Clock::now() - e0);
+    if (!err.empty()) {
+        std::fprintf(stderr, "error: %s\n", err.c_str());
+        out.status = kExitFailure;
+        return out;
+    }
+    const double total_ms = ms(Clock::now() - t0);
+    if (a.stats.empty()) return out;
+    // The exact flattening error, measured in a separate, untimed pass.
+    Canvas scratch{int(w), int(h)};
+    Renderer measure;
+    const RenderStats m =
+        measure.render(scene, Affine::scale(s), scratch, {options.flatten, a.antialias, true});
+    out.stats_json = "{\"input\": " + json_string(input) + ", \"output\": " + json_string(output) +
+                     ", \"segments_in\": " + std::to_string(stats.flatten.curves_in) +
+                     ", \"segments_out\": " + std::to_string(stats.flatten.segments_out) +
+                     ", \"max_error_px\": " + json_number(m.flatten.max_error) +
+                     ", \"parse_ms\": " + json_number(parse_ms) +
+                     ", \"flatten_ms\": " + json_number(median(flatten_ms)) +
+                     ", \"raster_ms\": " + json_number(median(raster_ms)) +
+                     ", \"encode_ms\": " + json_number(encode_ms) +
+                     ", \"frame_ms\": " + json_number(median(frame_ms)) +
+                     ", \"total_ms\": " + json_number(total_ms) +
+                     ", \"width\": " + std::to_string(int(w)) +
+                     ", \"height\": " + std::to_string(int(h)) +
+                     ", \"threads\": 1, \"repeat\": " + std::to_string(a.repeat) + "}";
+    return out;
+}
+
+int run_render(const RenderArgs& a) {
+    if (!(a.tolerance >= 1e-4 && a.tolerance <= 1.0)) {
+        std::fprintf(stderr,
+                     "casteljau render: --tolerance %g: must be in [0.0001, 1] device pixels\n",
+                     a.tolerance);
+        return kExitBadInput;
+    }
+    Premul background{};
+    if (!a.background.empty()) {
+        const auto c = parse_color(a.background);
+        if (!c) {
+            std::fprintf(stderr, "casteljau render: --background '%s' is not a color\n",
+                         a.background.c_str());
+            return kExitBadInput;
+        }
+        background = premultiply(*c);
+    }
+    const bool to_folder = a.inputs.size() > 1 || (!a.output.empty() && a.output.back() == '/');
+    if (to_folder) {
+        std::error_code ec;
+        fs::create_directories(a.output, ec);
+        if (ec) {
+            std::fprintf(stderr, "casteljau render: -o %s: cannot create the folder: %s\n",
+                         a.output.c_str(), ec.message().c_str());
+            return kExitFailure;
+        }
+    }
+    const bool progress = to_folder && ::isatty(2);
+    Renderer renderer;
+    Canvas canvas;
+    int status = kExitOk;
+    std::string stats;
+    for (std::size_t i = 0; i < a.inputs.size(); ++i) {
+        const std::string& in = a.inputs[i];
+        const std::string out =
+            to_folder ? (fs::path(a.output) / fs::path(in).stem()).string() + ".png" : a.output;
+        if (progress)
+            std::fprintf(stderr, "\r[%zu/%zu] %s\033[K", i + 1, a.inputs.size(), in.c_str());
+        const Outcome o = render_one(a, in, out, background, renderer, canvas);
+        status = std::max(status, o.status);
+        if (!o.stats_json.empty()) stats += o.stats_json + "\n";
+    }
+    if (progress) std::fprintf(stderr, "\n");
+    if (!a.stats.empty() && !stats.empty()) {
+        if (a.stats == "-") {
+            std::fputs(stats.c_str(), stdout);
+        } else if (!(std::ofstream(a.stats) << stats)) {
+            std::fprintf(stderr, "casteljau render: --stats %s: cannot write\n", a.stats.c_str());
+            status = std::max(status, kExitFailure);
+        }
+    }
+    return status;
+}
+
+} // namespace
+
+Command add_render_command(CLI::App& app) {
+    auto a = std::make_shared<RenderArgs>();
+    CLI::App* cmd = app.add_subcommand("render", "Render SVG files to images");
+    cmd->add_option("inputs", a->inputs, "SVG files")->required()->check(CLI::ExistingFile);
+    cmd->add_option("-o,--output", a->output,
+                    "Output image (png, tif, exr, jpg), or a folder for several inputs")
+        ->required();
+    auto* w = cmd->add_option("--width", a->width, "Output width in px (keeps the aspect ratio)")
+                  ->check(CLI::Range(1.0, double(kMaxSide)));
+    auto* h = cmd->add_option("--height", a->height, "Output height in px (keeps the aspect ratio)")
+                  ->check(CLI::Range(1.0, double(kMaxSide)));
+    auto* s = cmd->add_option("--scale", a->scale, "Scale factor from the document size")
+                  ->check(CLI::Range(1e-6, 1e6));
+    w->excludes(h)->excludes(s);
+    h->excludes(s);
+    cmd->add_option("--tolerance", a->tolerance,
+                    "Flatness bound in device pixels, in [1e-4, 1] (default 0.25)");
+    const std::map<std::string, FlattenMethod> methods{{"adaptive", FlattenMethod::Adaptive},
+                                                       {"uniform", FlattenMethod::Uniform},
+                                                       {"halving", FlattenMethod::Halving}};
+    cmd->add_option("--flatten", a->method, "adaptive (default), uniform, or halving")
+        ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
+    cmd->add_option("--segments", a->segments, "Uniform only: segments per curve")
+        ->check(CLI::Range(1, 1 << 20));
+    const std::map<std::string, bool> onoff{{"on", true}, {"off", false}};
+    cmd->add_option("--antialias", a->antialias,
+                    "on (exact-area coverage, default) or off (pixel centres)")
+        ->transform(CLI::CheckedTransformer(onoff, CLI::ignore_case));
+    cmd->add_option("--background", a->background, "Background color (default transparent)");
+    cmd->add_option("--threads", a->threads,
+                    "Threads (accepted; rendering is single-threaded for now)")
+        ->check(CLI::Range(1, 1024));
+    cmd->add_option("--repeat", a->repeat,
+                    "Render the parsed scene N times; stage times are medians")
+        ->check(CLI::Range(1, kMaxRepeat));
+    cmd->add_option("--stats", a->stats,
+                    "Write timing and error statistics as JSON to FILE, or - for stdout");
+    return [a] { return run_render(*a); };
+}
+
+} // namespace casteljau::cli

@@ -1,0 +1,18 @@
+// Writing a Canvas as an image file, in the encoding its format expects:
+// * 8-bit formats (PNG, JPEG, ...) and TIFF: straight (un-premultiplied)
+//   sRGB-encoded values, the SVG color space; TIFF is written as float.
+// * EXR: scene-linear, premultiplied, float, as OpenEXR files are by
+//   convention (the sRGB transfer function is undone channel by channel).
+// * JPEG has no alpha: the image is flattened onto white first.
+// Writes are atomic (see image_write.h).
+#pragma once
+
+#include "casteljau/paint/canvas.h"
+
+#include <string>
+
+namespace casteljau {
+
+std::string write_canvas_atomic(const std::string& path, const Canvas& canvas);
+
+} // namespace casteljau

@@ -1,0 +1,45 @@
+#include "casteljau/paint/canvas.h"
+
+#include <algorithm>
+
+namespace casteljau {
+
+Canvas::Canvas(int width, int height, int ox, int oy) { reset(width, height, ox, oy); }
+
+void Canvas::reset(int width, int height, int ox, int oy) {
+    w_ = width, h_ = height, ox_ = ox, oy_ = oy;
+    px_.assign(std::size_t(width) * std::size_t(height), Premul{});
+}
+
+void Canvas::fill(Premul color) { std::fill(px_.begin(), px_.end(), color); }
+
+void Canvas::composite_span(const Span& s, Premul c) {
+    Premul* d = row(s.y) + s.x;
+    for (int i = 0; i < s.len; ++i) {
+        const float k = s.coverage[i];
+        const float inv = 1.0f - k * c.a;
+        d[i].r = k * c.r + inv * d[i].r;
+        d[i].g = k * c.g + inv * d[i].g;
+        d[i].b = k * c.b + inv * d[i].b;
+        d[i].a = k * c.a + inv * d[i].a;
+    }
+}
+
+void Canvas::composite_layer(const Canvas& layer, float opacity) {
+    const int dx = layer.ox_ - ox_, dy = layer.oy_ - oy_;
+    const int x0 = std::max(0, dx), x1 = std::min(w_, dx + layer.w_);
+    const int y0 = std::max(0, dy), y1 = std::min(h_, dy + layer.h_);
+    for (int y = y0; y < y1; ++y) {
+        const Premul* s = layer.row(y - dy) + (x0 - dx);
+        Premul* d = row(y) + x0;
+        for (int i = 0; i < x1 - x0; ++i) {
+            const float inv = 1.0f - opacity * s[i].a;
+            d[i].r = opacity * s[i].r + inv * d[i].r;
+            d[i].g = opacity * s[i].g + inv * d[i].g;
+            d[i].b = opacity * s[i].b + inv * d[i].b;
+            d[i].a = opacity * s[i].a + inv * d[i].a;
+        }
+    }
+}
+
+} // namespace casteljau

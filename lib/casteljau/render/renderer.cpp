@@ -1,0 +1,103 @@
+#include "casteljau/render/renderer.h"
+
+#include "casteljau/raster/path_edges.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace casteljau {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+// Device-space bounds of a node: the transformed corners of each shape's tight
+// user-space bounds (conservative under rotation, exact otherwise).
+Rect node_bounds(const Node& n, const Affine& view) {
+    if (const Shape* s = std::get_if<Shape>(&n.item)) {
+        const Rect b = s->path.bounds();
+        if (b.is_empty()) return b;
+        const Affine m = view * s->transform;
+        return Rect::from_points(m * b.min(), m * b.max())
+            .united(m * Point{b.x0, b.y1})
+            .united(m * Point{b.x1, b.y0});
+    }
+    Rect r = Rect::empty();
+    for (const Node& c : std::get<Group>(n.item).children) r = r.united(node_bounds(c, view));
+    return r;
+}
+
+} // namespace
+
+RenderStats Renderer::render(const Scene& scene, const Affine& view, Canvas& canvas,
+                             const RenderOptions& options) {
+    view_ = view;
+    options_ = &options;
+    stats_ = {};
+    draw_group(scene.root, canvas, 0);
+    return stats_;
+}
+
+Canvas& Renderer::layer(int depth) {
+    while (int(layers_.size()) <= depth) layers_.push_back(std::make_unique<Canvas>());
+    return *layers_[std::size_t(depth)];
+}
+
+void Renderer::draw_group(const Group& g, Canvas& target, int depth) {
+    for (const Node& n : g.children) {
+        if (const Shape* s = std::get_if<Shape>(&n.item)) {
+            draw_shape(*s, target);
+            continue;
+        }
+        const Group& child = std::get<Group>(n.item);
+        if (child.opacity >= 1.0f) {
+            draw_group(child, target, depth);
+            continue;
+        }
+        if (child.opacity <= 0.0f) continue;
+        // The layer covers the group's bounds (one pixel of margin for
+        // antialiasing), clipped to the target.
+        const Rect b = node_bounds(n, view_);
+        if (b.is_empty()) continue;
+        const int x0 = std::max(target.origin_x(), int(std::floor(b.x0)) - 1);
+        const int y0 = std::max(target.origin_y(), int(std::floor(b.y0)) - 1);
+        const int x1 = std::min(target.origin_x() + target.width(), int(std::ceil(b.x1)) + 1);
+        const int y1 = std::min(target.origin_y() + target.height(), int(std::ceil(b.y1)) + 1);
+        if (x1 <= x0 || y1 <= y0) continue;
+        Canvas& l = layer(depth);
+        l.reset(x1 - x0, y1 - y0, x0, y0);
+        draw_group(child, l, depth + 1);
+        const auto t = Clock::now();
+        target.composite_layer(l, child.opacity);
+        stats_.raster_ms += ms_since(t);
+    }
+}
+
+void Renderer::draw_shape(const Shape& s, Canvas& target) {
+    if (!s.fill || s.opacity <= 0.0f) return;
+    const Fill& f = *s.fill;
+    const Premul color = premultiply(f.color, f.opacity * s.opacity);
+    if (color.a <= 0.0f) return;
+    const Affine to_target =
+        Affine::translate({-double(target.origin_x()), -double(target.origin_y())}) * view_ *
+        s.transform;
+    auto t = Clock::now();
+    edges_.reset(target.width(), target.height());
+    const FlattenStats fs =
+        add_path_edges(s.path, to_target, options_->flatten, edges_, options_->measure_error);
+    stats_.flatten.curves_in += fs.curves_in;
+    stats_.flatten.segments_out += fs.segments_out;
+    stats_.flatten.max_depth = std::max(stats_.flatten.max_depth, fs.max_depth);
+    stats_.flatten.max_error = std::max(stats_.flatten.max_error, fs.max_error);
+    stats_.flatten_ms += ms_since(t);
+    t = Clock::now();
+    SolidSpanPainter painter(target, color);
+    raster_.fill(edges_, f.rule, options_->antialias, painter);
+    stats_.raster_ms += ms_since(t);
+}
+
+} // namespace casteljau

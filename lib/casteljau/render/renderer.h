@@ -1,0 +1,52 @@
+// Renderer: a Scene onto a Canvas. Shape by shape: edges (flatten + clip,
+// raster/path_edges.h) -> coverage spans (raster/rasterizer.h) -> source-over
+// compositing (paint/canvas.h); groups with opacity go through an offscreen
+// layer limited to the group's bounds. The renderer keeps its edge list,
+// rasterizer buffers and layers between shapes and frames: in steady state a
+// frame allocates nothing new.
+#pragma once
+
+#include "casteljau/flatten/path_flatten.h"
+#include "casteljau/paint/canvas.h"
+#include "casteljau/raster/edge.h"
+#include "casteljau/raster/rasterizer.h"
+#include "casteljau/scene/scene.h"
+
+#include <memory>
+#include <vector>
+
+namespace casteljau {
+
+struct RenderOptions {
+    FlattenOptions flatten;
+    bool antialias = true;
+    bool measure_error = false; // fold the exact flattening error into the stats (slow)
+};
+
+struct RenderStats {
+    FlattenStats flatten;
+    double flatten_ms = 0; // edge building: culling, flattening, clipping
+    double raster_ms = 0;  // accumulation, sweep and compositing
+};
+
+class Renderer {
+  public:
+    // Draws `scene` onto `canvas`, mapping scene device space by `view`
+    // (e.g. a scale to the output size).
+    RenderStats render(const Scene& scene, const Affine& view, Canvas& canvas,
+                       const RenderOptions& options);
+
+  private:
+    void draw_group(const Group& g, Canvas& target, int depth);
+    void draw_shape(const Shape& s, Canvas& target);
+    Canvas& layer(int depth);
+
+    EdgeList edges_;
+    Rasterizer raster_;
+    std::vector<std::unique_ptr<Canvas>> layers_; // one per group nesting depth
+    Affine view_;
+    const RenderOptions* options_ = nullptr;
+    RenderStats stats_;
+};
+
+} // namespace casteljau

@@ -1,0 +1,67 @@
+// Scene: what gets drawn, independent of where it came from (the SVG reader
+// builds one; an application can build one directly).
+//
+// A scene is a tree of groups and shapes. Each shape carries its path in user
+// space, the full transform from user space to the scene's device space (the
+// product of its ancestors' transforms, its own and the viewBox mapping), and
+// its paint. A group carries only its opacity: group opacity needs an
+// offscreen layer, so groups with opacity 1 are flattened away by builders.
+#pragma once
+
+#include "casteljau/curve/path.h"
+#include "casteljau/paint/color.h"
+#include "casteljau/raster/sweep.h"
+
+#include <optional>
+#include <variant>
+#include <vector>
+
+namespace casteljau {
+
+struct Fill {
+    Rgba color;
+    float opacity = 1; // fill-opacity
+    FillRule rule = FillRule::NonZero;
+};
+
+enum class LineJoin { Miter, Round, Bevel };
+enum class LineCap { Butt, Round, Square };
+
+// Parsed and carried now; drawn by the stroke stage.
+struct Stroke {
+    Rgba color;
+    float opacity = 1;
+    double width = 1;
+    LineJoin join = LineJoin::Miter;
+    LineCap cap = LineCap::Butt;
+    double miter_limit = 4;
+    std::vector<double> dashes;
+    double dash_offset = 0;
+};
+
+struct Shape {
+    Path path;
+    Affine transform; // user space -> scene device space
+    std::optional<Fill> fill;
+    std::optional<Stroke> stroke;
+    float opacity = 1; // the element's own opacity
+    int source_line = 0;
+};
+
+struct Node;
+
+struct Group {
+    float opacity = 1;
+    std::vector<Node> children;
+};
+
+struct Node {
+    std::variant<Shape, Group> item;
+};
+
+struct Scene {
+    double width = 0, height = 0; // device size at scale 1, in px
+    Group root;
+};
+
+} // namespace casteljau

@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# Black-box tests of `casteljau render`: statuses, messages, outputs and the
+# promise that a failed render never writes or damages an output file.
+# Usage: render_cli_test.sh PATH/TO/casteljau DATA_DIR
+set -u
+bin="$1"; data="$2"
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fails=0; passes=0
+pass() { passes=$((passes+1)); }
+fail() { echo "FAIL $*"; fails=$((fails+1)); }
+
+expect() { # name status regex args...
+    local name="$1" want="$2" pattern="$3"; shift 3
+    local out status
+    out="$("$bin" "$@" 2>&1)"; status=$?
+    if [[ $status -ne $want ]]; then fail "$name: exit $status, want $want: $(head -3 <<<"$out")"; return; fi
+    if ! grep -Eq -- "$pattern" <<<"$out"; then fail "$name: output does not match /$pattern/: $(head -3 <<<"$out")"; return; fi
+    pass
+}
+
+# Formats by extension; sizes from --width/--height/--scale.
+for ext in png tif exr jpg; do
+    expect "format_$ext" 0 '' render "$data/ok.svg" -o "$tmp/ok.$ext" --scale 2
+    [[ -s "$tmp/ok.$ext" ]] && pass || fail "format_$ext: no file"
+done
+[[ "$(oiiotool --info "$tmp/ok.png" 2>/dev/null)" == *"80 x   60"* ]] && pass || fail "scale: $(oiiotool --info "$tmp/ok.png")"
+expect width 0 '' render "$data/ok.svg" -o "$tmp/w.png" --width 400
+[[ "$(oiiotool --info "$tmp/w.png" 2>/dev/null)" == *"400 x  300"* ]] && pass || fail "width: $(oiiotool --info "$tmp/w.png")"
+expect exclusive 2 'excludes' render "$data/ok.svg" -o "$tmp/x.png" --width 10 --height 10
+
+# --stats: the fields of the contract, medians over --repeat.
+expect stats 0 '"segments_in": [0-9]+, "segments_out": [0-9]+, "max_error_px": [0-9.e-]+, "parse_ms": [0-9.e-]+, "flatten_ms": [0-9.e-]+, "raster_ms": [0-9.e-]+, "encode_ms": [0-9.e-]+, "frame_ms": [0-9.e-]+, "total_ms": [0-9.e-]+, "width": 40, "height": 30, "threads": 1, "repeat": 5' \
+    render "$data/ok.svg" -o "$tmp/s.png" --stats - --repeat 5
+expect stats_file 0 '' render "$data/ok.svg" -o "$tmp/s.png" --stats "$tmp/stats.json"
+grep -q '"frame_ms"' "$tmp/stats.json" && pass || fail "stats file"
+expect aliased 0 '' render "$data/ok.svg" -o "$tmp/a.png" --antialias off --background '#fff'
+expect uniform 0 '' render "$data/ok.svg" -o "$tmp/u.png" --flatten uniform --segments 3
+
+# Several inputs into a folder.
+expect folder 0 '' render "$data/ok.svg" "$data/bad_path.svg" -o "$tmp/outdir/"
+[[ -s "$tmp/outdir/ok.png" && -s "$tmp/outdir/bad_path.png" ]] && pass || fail "folder outputs: $(ls "$tmp/outdir")"
+
+# Bad input: status 2, a located message, nothing written, an existing file untouched.
+echo precious > "$tmp/keep.png"
+for case in truncated:'truncated.svg:1: malformed XML' nonnumber:'nonnumber.svg:2: <rect>: attribute width' \
+            nan:'nan.svg:2: <circle>: attribute r' zero_size:'must be positive' negative_size:'must be positive' \
+            huge_size:'exceeds the limit'; do
+    name="${case%%:*}"; pattern="${case#*:}"
+    expect "bad_$name" 2 "$pattern" render "$data/$name.svg" -o "$tmp/keep.png"
+    [[ "$(cat "$tmp/keep.png")" == precious ]] && pass || fail "bad_$name: the existing output was changed"
+done
+expect bad_path_warns 0 'bad_path.svg:2: <path>: path data: at offset 21' render "$data/bad_path.svg" -o "$tmp/bp.png"
+expect missing_file 2 'does not exist|not exist' render "$tmp/nope.svg" -o "$tmp/n.png"
+expect bad_background 2 'not a color' render "$data/ok.svg" -o "$tmp/b.png" --background nocolor
+expect bad_tolerance 2 'tolerance' render "$data/ok.svg" -o "$tmp/b.png" --tolerance 0
+expect too_big 2 'outside the limits' render "$data/ok.svg" -o "$tmp/b.png" --scale 1000
+ls "$tmp"/b.png >/dev/null 2>&1 && fail "a failed render wrote b.png" || pass
+# Output failures: status 1, existing file intact.
+mkdir -p "$tmp/isdir.png"
+expect output_is_folder 1 'folder' render "$data/ok.svg" -o "$tmp/isdir.png"
+expect output_unwritable 1 'cannot|No such' render "$data/ok.svg" -o "$tmp/no/such/dir/x.png"
+ls "$tmp" | grep -q '\.tmp-' && fail "temporary files left behind: $(ls "$tmp")" || pass
+
+echo "$passes passed, $fails failed"
+[[ $fails -eq 0 ]]

@@ -1,0 +1,184 @@
+#include "casteljau/svg/color.h"
+#include "casteljau/svg/reader.h"
+#include "casteljau/svg/style.h"
+#include "casteljau/svg/transform_list.h"
+#include "check.h"
+
+#include <chrono>
+#include <gtest/gtest.h>
+#include <numbers>
+
+namespace casteljau {
+namespace {
+
+SvgResult parse(const std::string& body, const std::string& root = R"(width="100" height="100")") {
+    return parse_svg(
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" " + root + ">\n" + body + "\n</svg>", "t.svg");
+}
+
+const Shape& first_shape(const Scene& s) { return std::get<Shape>(s.root.children.at(0).item); }
+
+TEST(Color, NamesHexAndRgb) {
+    EXPECT_EQ(parse_color("green"), (Rgba{0, 128 / 255.0f, 0, 1}));
+    EXPECT_EQ(parse_color("LightGoldenrodYellow"),
+              (Rgba{250 / 255.0f, 250 / 255.0f, 210 / 255.0f, 1}));
+    EXPECT_EQ(parse_color("yellowgreen"), (Rgba{154 / 255.0f, 205 / 255.0f, 50 / 255.0f, 1}));
+    EXPECT_EQ(parse_color("aliceblue")->r, 240 / 255.0f);
+    EXPECT_EQ(parse_color("#f80"), (Rgba{1, 136 / 255.0f, 0, 1}));
+    EXPECT_EQ(parse_color("#FF8000"), (Rgba{1, 128 / 255.0f, 0, 1}));
+    EXPECT_EQ(parse_color(" rgb(255, 0, 128) "), (Rgba{1, 0, 128 / 255.0f, 1}));
+    EXPECT_EQ(parse_color("rgb(100%, 50%, 300%)"), (Rgba{1, 0.5f, 1, 1}));
+    for (const char* bad : {"", "#12", "#ggg", "rgb(1,2)", "rgb(1,2,3", "notacolor", "rgb(1 2 3)"})
+        EXPECT_FALSE(parse_color(bad)) << bad;
+}
+
+TEST(TransformList, EveryFunctionAndErrors) {
+    const auto near = [](const Affine& a, const Affine& b) {
+        return std::fabs(a.a - b.a) + std::fabs(a.b - b.b) + std::fabs(a.c - b.c) +
+                   std::fabs(a.d - b.d) + std::fabs(a.e - b.e) + std::fabs(a.f - b.f) <
+               1e-12;
+    };
+    EXPECT_TRUE(near(parse_transform_list("translate(10) scale(2,3)").transform,
+                     Affine::translate({10, 0}) * Affine::scale(2, 3)));
+    EXPECT_TRUE(near(parse_transform_list("rotate(90 10 10)").transform,
+                     Affine::translate({10, 10}) * Affine::rotate(std::numbers::pi / 2) *
+                         Affine::translate({-10, -10})));
+    EXPECT_TRUE(
+        near(parse_transform_list("matrix(1,2,3,4,5,6)").transform, Affine{1, 2, 3, 4, 5, 6}));
+    EXPECT_TRUE(near(parse_transform_list("skewX(45)skewY(0)").transform,
+                     Affine::skew_x(std::numbers::pi / 4)));
+    for (const char* bad : {"translate(1,2,3)", "rotate(1,2)", "scale()", "spin(3)", "translate(1",
+                            "matrix(1 2 3 4 5 nan)", "scale(1e999)"})
+        EXPECT_FALSE(parse_transform_list(bad).error.empty()) << bad;
+}
+
+TEST(Style, InheritanceAndStylePrecedence) {
+    const SvgResult r = parse(R"(<g fill="red" fill-rule="evenodd" opacity="1">
+      <rect width="10" height="10" style="fill: blue; fill-opacity: 50%"/>
+      <rect width="10" height="10"/>
+      <rect width="10" height="10" fill="lime" style="fill:inherit"/>
+      <rect width="10" height="10" color="#00f" fill="currentColor"/>
+      </g>)");
+    ASSERT_TRUE(r.scene) << r.error;
+    const auto& c = r.scene->root.children;
+    ASSERT_EQ(c.size(), 4u); // a group of opacity 1 is flattened away
+    const Fill& a = *std::get<Shape>(c[0].item).fill;
+    EXPECT_EQ(a.color, (Rgba{0, 0, 1, 1}));
+    EXPECT_EQ(a.opacity, 0.5f);
+    EXPECT_EQ(a.rule, FillRule::EvenOdd);
+    EXPECT_EQ(std::get<Shape>(c[1].item).fill->color, (Rgba{1, 0, 0, 1}));
+    EXPECT_EQ(std::get<Shape>(c[2].item).fill->color, (Rgba{1, 0, 0, 1}));
+    EXPECT_EQ(std::get<Shape>(c[3].item).fill->color, (Rgba{0, 0, 1, 1}));
+}
+
+TEST(Reader, ViewBoxAndPreserveAspectRatio) {
+    // 0..10 mapped into 200 x 100, meet, centred: scale 10, x offset 50.
+    const SvgResult r = parse(R"(<rect width="10" height="10"/>)",
+                              R"(width="200" height="100" viewBox="0 0 10 10")");
+    ASSERT_TRUE(r.scene) << r.error;
+    const Affine& m = first_shape(*r.scene).transform;
+    EXPECT_EQ((m * Point{0, 0}), Point(50, 0));
+    EXPECT_EQ((m * Point{10, 10}), Point(150, 100));
+    const SvgResult s = parse(
+        R"(<rect width="10" height="10"/>)",
+        R"(width="200" height="100" viewBox="0 0 10 10" preserveAspectRatio="xMinYMax slice")");
+    EXPECT_EQ((first_shape(*s.scene).transform * Point{10, 10}), Point(200, 200 - 100));
+    const SvgResult n =
+        parse(R"(<rect width="10" height="10"/>)",
+              R"(width="200" height="100" viewBox="0 0 10 10" preserveAspectRatio="none")");
+    EXPECT_EQ((first_shape(*n.scene).transform * Point{10, 10}), Point(200, 100));
+    // No width/height: the viewBox size.
+    const SvgResult v = parse("", R"(viewBox="0 0 30 20")");
+    EXPECT_EQ(v.scene->width, 30);
+}
+
+TEST(Reader, RectCornersFollowTheSpecRules) {
+    // Only rx given: ry = rx; rx larger than half the width: clamped.
+    const SvgResult r = parse(R"(<rect x="0" y="0" width="20" height="100" rx="15"/>)");
+    const Rect b = first_shape(*r.scene).path.bounds();
+    EXPECT_NEAR(b.x1, 20, 1e-12);
+    EXPECT_NEAR(b.y1, 100, 1e-12);
+    // 4 lines + 4 corner arcs (one conic each)
+    EXPECT_EQ(first_shape(*r.scene).path.segment_count(), 8u);
+}
+
+struct BadCase {
+    const char* body;
+    const char* root;
+    const char* expect; // substring of the error
+};
+
+TEST(Reader, BadInputNamesFileLineAndElement) {
+    const BadCase cases[] = {
+        {"<rect width='10' height='1x0'/>", R"(width="10" height="10")",
+         "t.svg:2: <rect>: attribute height: '1x0'"},
+        {"<circle r='nan'/>", R"(width="10" height="10")", "t.svg:2: <circle>: attribute r"},
+        {"<circle r='-3'/>", R"(width="10" height="10")", "negative"},
+        {"<rect width='1e999' height='1'/>", R"(width="10" height="10")", "attribute width"},
+        {"<rect fill='blurple' width='1' height='1'/>", R"(width="10" height="10")",
+         "t.svg:2: <rect>: property fill"},
+        {"<rect transform='rotate(1,2)' width='1' height='1'/>", R"(width="10" height="10")",
+         "transform: rotate()"},
+        {"", R"(width="0" height="10")", "must be positive"},
+        {"", R"(width="-5" height="10")", "must be positive"},
+        {"", R"(width="100000" height="10")", "exceeds the limit"},
+        {"", R"(width="10")", "no height and no viewBox"},
+        {"", R"(viewBox="0 0 -1 5")", "viewBox"},
+        {"<rect", R"(width="10" height="10")", "malformed XML"},
+    };
+    for (const BadCase& c : cases) {
+        const SvgResult r = parse(c.body, c.root);
+        EXPECT_FALSE(r.scene) << c.body;
+        EXPECT_NE(r.error.find(c.expect), std::string::npos) << "got: " << r.error;
+    }
+    const SvgResult notsvg = parse_svg("<html/>", "x.svg");
+    EXPECT_NE(notsvg.error.find("x.svg:1: the root element is <html>"), std::string::npos)
+        << notsvg.error;
+}
+
+TEST(Reader, BadPathDataDrawsUpToTheErrorWithAWarning) {
+    const SvgResult r = parse(R"(<path d="M0 0 L10 0 L10 10 L x 5"/>)");
+    ASSERT_TRUE(r.scene) << r.error;
+    EXPECT_EQ(first_shape(*r.scene).path.segment_count(), 2u);
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("t.svg:2: <path>: path data: at offset 20"), std::string::npos)
+        << r.warnings[0];
+}
+
+TEST(Reader, UnsupportedElementsAreSkippedWithOneWarningEach) {
+    const SvgResult r = parse("<text>hi</text><image/><defs><linearGradient/></defs><title>t</"
+                              "title><rect width='1' height='1'/>");
+    ASSERT_TRUE(r.scene) << r.error;
+    EXPECT_EQ(r.scene->root.children.size(), 1u);
+    EXPECT_EQ(r.warnings.size(), 2u);
+}
+
+TEST(Reader, LimitsOnNestingAndElementCount) {
+    std::string deep;
+    for (int i = 0; i < 300; ++i) deep += "<g>";
+    for (int i = 0; i < 300; ++i) deep += "</g>";
+    EXPECT_NE(parse(deep).error.find("nested deeper than 256"), std::string::npos);
+    SvgLimits few;
+    few.max_elements = 10;
+    std::string many;
+    for (int i = 0; i < 20; ++i) many += "<rect width='1' height='1'/>";
+    const SvgResult r = parse_svg("<svg width='10' height='10'>" + many + "</svg>", "m.svg", few);
+    EXPECT_NE(r.error.find("more than 10 elements"), std::string::npos) << r.error;
+}
+
+TEST(Reader, EntitiesAreNeverExpanded) {
+    // A "billion laughs" bomb and an external entity: no DTD processing, so
+    // neither is expanded; the document parses quickly and stays small.
+    std::string bomb = "<?xml version=\"1.0\"?>\n<!DOCTYPE svg [\n<!ENTITY a \"aaaaaaaaaa\">\n";
+    for (int i = 1; i < 10; ++i)
+        bomb += "<!ENTITY a" + std::to_string(i) + " \"" + std::string(10, '&') + "\">\n";
+    bomb += "<!ENTITY ext SYSTEM \"file:///etc/passwd\">\n]>\n<svg width='10' "
+            "height='10'><title>&a9;&ext;</title></svg>";
+    const auto t0 = std::chrono::steady_clock::now();
+    const SvgResult r = parse_svg(bomb, "bomb.svg");
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(2));
+    EXPECT_TRUE(r.scene || !r.error.empty());
+}
+
+} // namespace
+} // namespace casteljau
