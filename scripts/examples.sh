@@ -3,6 +3,8 @@
 #   out/curves.png          every curve kind, adaptive (blue) vs uniform (orange)
 #   out/curves.txt          their segment counts and measured errors
 #   out/flatten-*.json      `casteljau flatten --json` on the example paths
+#   out/svg/*.png           the example SVG files rendered by `casteljau render`
+#   out/svg/stats.json      their render statistics (one JSON object per file)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -18,4 +20,6 @@ while read -r name data; do
     printf '%-14s %-9s %s\n' "$name" "$method" "$(cut -c1-60 "out/flatten-$name-$method.json")"
   done
 done < examples/paths.txt
+build/cli/casteljau render examples/svg/*.svg -o out/svg/ --scale 2 --stats out/svg/stats.json
+echo "rendered $(ls out/svg/*.png | wc -l) SVG examples into out/svg/"
 echo "examples written to $(pwd)/out"
