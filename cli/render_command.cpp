@@ -7,7 +7,7 @@
 // JSON object per input (one per line), with the stage times as medians over
 // --repeat renders of the already parsed scene.
 #include "casteljau/io/canvas_write.h"
-#include "casteljau/render/renderer.h"
+#include "casteljau/render/bands.h"
 #include "casteljau/svg/color.h"
 #include "casteljau/svg/reader.h"
 #include "commands.h"
@@ -51,6 +51,10 @@ struct RenderArgs {
     std::string stats;
 };
 
+int threads(const RenderArgs& a) {
+    return a.threads > 0 ? a.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
 
 double median(std::vector<double> v) {
@@ -65,7 +69,7 @@ struct Outcome {
 };
 
 Outcome render_one(const RenderArgs& a, const std::string& input, const std::string& output,
-                   Premul background, Renderer& renderer, Canvas& canvas) {
+                   Premul background, BandRenderer& renderer, Canvas& canvas) {
     Outcome out;
     const auto t0 = Clock::now();
     const SvgResult doc = read_svg_file(input);
@@ -97,8 +101,7 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
     for (int i = 0; i < a.repeat; ++i) {
         const auto f0 = Clock::now();
         canvas.reset(int(w), int(h));
-        if (background.a > 0) canvas.fill(background);
-        stats = renderer.render(scene, Affine::scale(s), canvas, options);
+        stats = renderer.render(scene, Affine::scale(s), canvas, options, background, threads(a));
         frame_ms.push_back(ms(Clock::now() - f0));
         flatten_ms.push_back(stats.flatten_ms);
         raster_ms.push_back(stats.raster_ms);
@@ -113,24 +116,26 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
     }
     const double total_ms = ms(Clock::now() - t0);
     if (a.stats.empty()) return out;
-    // The exact flattening error, measured in a separate, untimed pass.
+    // Segment counts and the exact flattening error, from a separate, untimed
+    // single-band pass (bands repeat the flattening of shapes they share).
     Canvas scratch{int(w), int(h)};
     Renderer measure;
     const RenderStats m =
         measure.render(scene, Affine::scale(s), scratch, {options.flatten, a.antialias, true});
-    out.stats_json = "{\"input\": " + json_string(input) + ", \"output\": " + json_string(output) +
-                     ", \"segments_in\": " + std::to_string(stats.flatten.curves_in) +
-                     ", \"segments_out\": " + std::to_string(stats.flatten.segments_out) +
-                     ", \"max_error_px\": " + json_number(m.flatten.max_error) +
-                     ", \"parse_ms\": " + json_number(parse_ms) +
-                     ", \"flatten_ms\": " + json_number(median(flatten_ms)) +
-                     ", \"raster_ms\": " + json_number(median(raster_ms)) +
-                     ", \"encode_ms\": " + json_number(encode_ms) +
-                     ", \"frame_ms\": " + json_number(median(frame_ms)) +
-                     ", \"total_ms\": " + json_number(total_ms) +
-                     ", \"width\": " + std::to_string(int(w)) +
-                     ", \"height\": " + std::to_string(int(h)) +
-                     ", \"threads\": 1, \"repeat\": " + std::to_string(a.repeat) + "}";
+    stats.flatten = m.flatten;
+    out.stats_json =
+        "{\"input\": " + json_string(input) + ", \"output\": " + json_string(output) +
+        ", \"segments_in\": " + std::to_string(stats.flatten.curves_in) +
+        ", \"segments_out\": " + std::to_string(stats.flatten.segments_out) +
+        ", \"max_error_px\": " + json_number(m.flatten.max_error) +
+        ", \"parse_ms\": " + json_number(parse_ms) +
+        ", \"flatten_ms\": " + json_number(median(flatten_ms)) +
+        ", \"raster_ms\": " + json_number(median(raster_ms)) +
+        ", \"encode_ms\": " + json_number(encode_ms) +
+        ", \"frame_ms\": " + json_number(median(frame_ms)) +
+        ", \"total_ms\": " + json_number(total_ms) + ", \"width\": " + std::to_string(int(w)) +
+        ", \"height\": " + std::to_string(int(h)) + ", \"threads\": " + std::to_string(threads(a)) +
+        ", \"repeat\": " + std::to_string(a.repeat) + "}";
     return out;
 }
 
@@ -162,7 +167,7 @@ int run_render(const RenderArgs& a) {
         }
     }
     const bool progress = to_folder && ::isatty(2);
-    Renderer renderer;
+    BandRenderer renderer;
     Canvas canvas;
     int status = kExitOk;
     std::string stats;

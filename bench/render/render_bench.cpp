@@ -2,11 +2,10 @@
 // encode): the bundled dense scene (examples/svg/dense.svg, 3000 shapes at
 // 1024 x 768) and a full-canvas rectangle, whose pixels/s are compared with a
 // memset of the same buffer (the bandwidth limit) in the same run.
-#include "casteljau/render/renderer.h"
+#include "casteljau/render/bands.h"
 #include "casteljau/svg/reader.h"
 
 #include <benchmark/benchmark.h>
-
 #include <cstring>
 
 namespace casteljau {
@@ -21,15 +20,16 @@ Scene load(const std::string& path) {
     return std::move(*r.scene);
 }
 
-void render_frames(benchmark::State& state, const Scene& scene, bool antialias) {
-    Renderer renderer;
+void render_frames(benchmark::State& state, const Scene& scene, bool antialias, int threads = 1) {
+    BandRenderer renderer;
     Canvas canvas;
     RenderOptions options;
     options.antialias = antialias;
     std::size_t segments = 0;
     for (auto _ : state) {
         canvas.reset(int(scene.width), int(scene.height));
-        segments = renderer.render(scene, Affine::identity(), canvas, options).flatten.segments_out;
+        segments = renderer.render(scene, Affine::identity(), canvas, options, {}, threads)
+                       .flatten.segments_out;
         benchmark::DoNotOptimize(canvas.row(0));
     }
     const double px = scene.width * scene.height;
@@ -44,10 +44,23 @@ void BM_DenseScene(benchmark::State& state) {
 }
 BENCHMARK(BM_DenseScene)->Arg(1)->Arg(0)->ArgName("antialias")->Unit(benchmark::kMillisecond);
 
+// Bands on 1 and 2 threads (wall time: UseRealTime), for the scaling ratio.
+void BM_DenseSceneThreads(benchmark::State& state) {
+    static const Scene scene = load(CASTELJAU_EXAMPLES "/svg/dense.svg");
+    render_frames(state, scene, true, int(state.range(0)));
+}
+BENCHMARK(BM_DenseSceneThreads)
+    ->Arg(1)
+    ->Arg(2)
+    ->ArgName("threads")
+    ->UseRealTime()
+    ->Unit(benchmark::kMillisecond);
+
 void BM_FullCanvasFill(benchmark::State& state) {
     static const Scene scene = [] {
-        SvgResult r = parse_svg(R"(<svg width="2048" height="2048"><rect width="2048" height="2048" fill="teal"/></svg>)",
-                                "full.svg");
+        SvgResult r = parse_svg(
+            R"(<svg width="2048" height="2048"><rect width="2048" height="2048" fill="teal"/></svg>)",
+            "full.svg");
         return std::move(*r.scene);
     }();
     render_frames(state, scene, true);

@@ -29,8 +29,13 @@ expect width 0 '' render "$data/ok.svg" -o "$tmp/w.png" --width 400
 expect exclusive 2 'excludes' render "$data/ok.svg" -o "$tmp/x.png" --width 10 --height 10
 
 # --stats: the fields of the contract, medians over --repeat.
-expect stats 0 '"segments_in": [0-9]+, "segments_out": [0-9]+, "max_error_px": [0-9.e-]+, "parse_ms": [0-9.e-]+, "flatten_ms": [0-9.e-]+, "raster_ms": [0-9.e-]+, "encode_ms": [0-9.e-]+, "frame_ms": [0-9.e-]+, "total_ms": [0-9.e-]+, "width": 40, "height": 30, "threads": 1, "repeat": 5' \
+expect stats 0 '"segments_in": [0-9]+, "segments_out": [0-9]+, "max_error_px": [0-9.e-]+, "parse_ms": [0-9.e-]+, "flatten_ms": [0-9.e-]+, "raster_ms": [0-9.e-]+, "encode_ms": [0-9.e-]+, "frame_ms": [0-9.e-]+, "total_ms": [0-9.e-]+, "width": 40, "height": 30, "threads": [0-9]+, "repeat": 5' \
     render "$data/ok.svg" -o "$tmp/s.png" --stats - --repeat 5
+# Threads: the same image bytes and the same counts as one thread.
+"$bin" render "$data/../../../examples/svg/opacity.svg" -o "$tmp/t1.png" --threads 1 --stats "$tmp/t1.json" 2>/dev/null
+"$bin" render "$data/../../../examples/svg/opacity.svg" -o "$tmp/t3.png" --threads 3 --stats "$tmp/t3.json" 2>/dev/null
+cmp -s "$tmp/t1.png" "$tmp/t3.png" && pass || fail "threads: images differ"
+[[ "$(grep -o '"segments_out": [0-9]*' "$tmp/t1.json")" == "$(grep -o '"segments_out": [0-9]*' "$tmp/t3.json")" ]] && pass || fail "threads: counts differ"
 expect stats_file 0 '' render "$data/ok.svg" -o "$tmp/s.png" --stats "$tmp/stats.json"
 grep -q '"frame_ms"' "$tmp/stats.json" && pass || fail "stats file"
 expect aliased 0 '' render "$data/ok.svg" -o "$tmp/a.png" --antialias off --background '#fff'

@@ -1,8 +1,10 @@
 // Compositing and whole-scene rendering, with values worked out by hand.
 #include "casteljau/paint/canvas.h"
+#include "casteljau/render/bands.h"
 #include "casteljau/render/renderer.h"
 #include "casteljau/svg/reader.h"
 
+#include <cstring>
 #include <gtest/gtest.h>
 
 namespace casteljau {
@@ -83,6 +85,32 @@ TEST(Render, AliasedModeHasOnlyFullOrNoCoverage) {
                 EXPECT_EQ(a, d < 7.3 ? 1.0f : 0.0f) << x << "," << y;
             }
         }
+}
+
+// Bands on several threads give the same bits as one thread: edges are
+// clipped to the frame, never to the band, on scenes with layers and with
+// shapes crossing band borders, for band counts that do not divide the height.
+TEST(Render, BandsAreBitIdenticalToOneThread) {
+    for (const char* file : {"dense.svg", "opacity.svg", "holes.svg", "transforms.svg"}) {
+        const SvgResult doc = read_svg_file(std::string(CASTELJAU_EXAMPLES "/svg/") + file);
+        ASSERT_TRUE(doc.scene) << doc.error;
+        const int w = int(doc.scene->width * 1.5), h = int(doc.scene->height * 1.5);
+        BandRenderer one, many;
+        Canvas a(w, h), b(w, h);
+        for (bool aa : {true, false}) {
+            RenderOptions o;
+            o.antialias = aa;
+            one.render(*doc.scene, Affine::scale(1.5), a, o, {0, 0, 0, 0}, 1);
+            for (int threads : {2, 3, 7}) {
+                many.render(*doc.scene, Affine::scale(1.5), b, o, {0, 0, 0, 0}, threads);
+                int differing = 0;
+                for (int y = 0; y < h; ++y)
+                    differing +=
+                        std::memcmp(a.row(y), b.row(y), std::size_t(w) * sizeof(Premul)) != 0;
+                EXPECT_EQ(differing, 0) << file << " with " << threads << " threads, aa " << aa;
+            }
+        }
+    }
 }
 
 } // namespace

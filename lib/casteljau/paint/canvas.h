@@ -45,11 +45,15 @@ class Canvas {
     int w_ = 0, h_ = 0, ox_ = 0, oy_ = 0;
 };
 
-// Adapts the raster's span interface to solid-color compositing.
+// Adapts the raster's span interface (absolute pixel coordinates) to
+// solid-color compositing on a canvas placed at its origin.
 class SolidSpanPainter final : public SpanSink {
   public:
     SolidSpanPainter(Canvas& c, Premul color) : canvas_(c), color_(color) {}
-    void span(const Span& s) override { canvas_.composite_span(s, color_); }
+    void span(const Span& s) override {
+        canvas_.composite_span(
+            {s.y - canvas_.origin_y(), s.x - canvas_.origin_x(), s.len, s.coverage}, color_);
+    }
 
   private:
     Canvas& canvas_;

@@ -4,28 +4,30 @@
 
 namespace casteljau {
 
-void EdgeList::reset(int width, int height) {
+void EdgeList::reset(PixelRect clip, int row_begin, int row_end) {
     edges_.clear();
-    w_ = width;
-    h_ = height;
+    clip_ = clip;
+    row_begin_ = std::max(row_begin, clip.y0);
+    row_end_ = std::min(row_end, clip.y1);
 }
 
 void EdgeList::add_line(Point a, Point b) {
     if (a.y == b.y) return;
     const float dir = a.y < b.y ? 1.0f : -1.0f;
     if (a.y > b.y) std::swap(a, b);
-    // y clip: nothing outside [0, H] covers a row.
-    const double h = h_;
-    if (b.y <= 0 || a.y >= h) return;
+    // Outside the band: dropped, before any arithmetic that could differ.
+    if (b.y <= row_begin_ || a.y >= row_end_) return;
+    // y clip: nothing outside [y0, y1] covers a row.
+    const double top = clip_.y0, bottom = clip_.y1;
     const auto x_at = [&](double y) { return a.x + (b.x - a.x) * ((y - a.y) / (b.y - a.y)); };
-    if (a.y < 0) a = {x_at(0), 0};
-    if (b.y > h) b = {x_at(h), h};
+    if (a.y < top) a = {x_at(top), top};
+    if (b.y > bottom) b = {x_at(bottom), bottom};
     // x clip: split at the borders, then clamp (the clamped parts are vertical).
-    const double w = w_;
-    // Breakpoints in y: the ends and where the segment crosses x = 0 and x = W.
+    const double left = clip_.x0, right = clip_.x1;
+    // Breakpoints in y: the ends and where the segment crosses the borders.
     double ys[4] = {a.y, 0, 0, 0};
     int n = 1;
-    for (double border : {0.0, w}) {
+    for (double border : {left, right}) {
         if ((a.x < border) != (b.x < border) && a.x != b.x) {
             const double y = a.y + (b.y - a.y) * ((border - a.x) / (b.x - a.x));
             if (y > a.y && y < b.y) ys[n++] = y;
@@ -36,7 +38,7 @@ void EdgeList::add_line(Point a, Point b) {
     const auto x_on = [&](double y) {
         const double x =
             y == a.y ? a.x : (y == b.y ? b.x : a.x + (b.x - a.x) * ((y - a.y) / (b.y - a.y)));
-        return std::clamp(x, 0.0, w);
+        return std::clamp(x, left, right);
     };
     for (int i = 0; i + 1 < n; ++i)
         if (ys[i] < ys[i + 1]) push(x_on(ys[i]), ys[i], x_on(ys[i + 1]), ys[i + 1], dir);

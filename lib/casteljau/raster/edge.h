@@ -4,14 +4,18 @@
 // `dir` (+1 when the segment went down, -1 when it went up): the winding
 // contribution. Horizontal segments contribute nothing and are dropped.
 //
-// Clipping to the canvas [0, W] x [0, H] keeps the coverage exact:
-// * y: the part above 0 or below H is cut off (it covers no row).
-// * x: the part left of 0 is replaced by its projection onto x = 0 (a vertical
-//   edge at the left border: it still changes the winding of every pixel to
-//   its right, and a vertical edge at x = 0 covers no pixel area itself), and
-//   the part right of W by its projection onto x = W (it changes nothing
-//   visible). Segments are split where they cross x = 0 or x = W so that the
-//   projected part is exactly the part outside.
+// Clipping to the clip rectangle [x0, x1] x [y0, y1] keeps the coverage exact:
+// * y: the part above y0 or below y1 is cut off (it covers no row).
+// * x: the part left of x0 is replaced by its projection onto x = x0 (a
+//   vertical edge at the left border: it still changes the winding of every
+//   pixel to its right, and a vertical edge on the border covers no pixel area
+//   itself), and the part right of x1 by its projection onto x = x1 (it
+//   changes nothing visible). Segments are split where they cross the borders
+//   so that the projected part is exactly the part outside.
+// Coordinates stay absolute (device pixels of the whole frame). A band of
+// rows [row_begin, row_end) may be asked for: segments entirely outside it
+// are dropped, and the others are stored exactly as without the band, so
+// rendering in bands gives the same bits as rendering whole.
 // Coordinates are double on input and float after clipping: clipped values lie
 // in [0, 16384], where float resolves 2^-10 px, far below 1/255 coverage.
 #pragma once
@@ -22,6 +26,13 @@
 
 namespace casteljau {
 
+// Pixels [x0, x1) x [y0, y1).
+struct PixelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    int width() const { return x1 - x0; }
+    int height() const { return y1 - y0; }
+};
+
 struct Edge {
     float x0, y0, x1, y1; // y0 < y1
     float dir;            // +1 or -1
@@ -29,20 +40,24 @@ struct Edge {
 
 class EdgeList {
   public:
-    // Starts a new list for a canvas of w x h pixels, keeping the storage.
-    void reset(int width, int height);
+    // Starts a new list clipped to `clip`, for the rows [row_begin, row_end);
+    // keeps the storage.
+    void reset(PixelRect clip, int row_begin, int row_end);
+    void reset(int width, int height) { reset({0, 0, width, height}, 0, height); }
     // Adds the segment a -> b, clipped. Precondition: finite coordinates.
     void add_line(Point a, Point b);
 
     const std::vector<Edge>& edges() const { return edges_; }
-    int width() const { return w_; }
-    int height() const { return h_; }
+    const PixelRect& clip() const { return clip_; }
+    int row_begin() const { return row_begin_; }
+    int row_end() const { return row_end_; }
 
   private:
     void push(double x0, double y0, double x1, double y1, float dir);
 
     std::vector<Edge> edges_;
-    int w_ = 0, h_ = 0;
+    PixelRect clip_;
+    int row_begin_ = 0, row_end_ = 0;
 };
 
 } // namespace casteljau

@@ -38,10 +38,12 @@ struct EdgeEmitter {
 
     template <class Curve>
     void cull_and_flatten(const Curve& curve) {
-        const double w = edges.width(), h = edges.height();
-        // Pieces up to a few canvas sizes are flattened whole: culling them
+        const PixelRect& clip = edges.clip();
+        const double left = clip.x0, upper = clip.y0, right = clip.x1, lower = clip.y1;
+        const double rows_top = edges.row_begin(), rows_bottom = edges.row_end();
+        // Pieces up to a few clip sizes are flattened whole: culling them
         // further would cost more splits than the segments it saves.
-        const double small = 4.0 * std::max(w, h);
+        const double small = 4.0 * std::max(clip.width(), clip.height());
         struct Piece {
             Curve c;
             int depth;
@@ -52,13 +54,18 @@ struct EdgeEmitter {
         while (top > 0) {
             const Piece p = stack[--top];
             const Rect box = control_box(p.c);
-            if (box.y1 <= 0 || box.y0 >= h || box.x0 >= w) continue;
-            if (box.x1 <= 0) {
+            // Outside the clip, or outside the band of rows asked for. The
+            // decisions below depend on the clip only, never on the band, so
+            // a band gets exactly the edges the whole frame would.
+            if (box.y1 <= upper || box.y0 >= lower || box.x0 >= right) continue;
+            if (box.y1 <= rows_top || box.y0 >= rows_bottom) continue;
+            if (box.x1 <= left) {
                 edges.add_line(p.c.start(), p.c.end());
                 ++stats.segments_out;
                 continue;
             }
-            const bool inside = box.x0 >= 0 && box.y0 >= 0 && box.x1 <= w && box.y1 <= h;
+            const bool inside =
+                box.x0 >= left && box.y0 >= upper && box.x1 <= right && box.y1 <= lower;
             if (inside || p.depth == kCullDepth ||
                 (box.width() <= small && box.height() <= small)) {
                 flatten(p.c);

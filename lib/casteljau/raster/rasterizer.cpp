@@ -6,20 +6,24 @@
 namespace casteljau {
 
 void Rasterizer::fill(const EdgeList& edges, FillRule rule, bool antialias, SpanSink& sink) {
-    width_ = edges.width();
-    const int height = edges.height();
+    width_ = edges.clip().width();
+    x0_ = edges.clip().x0;
+    const int row_end = edges.row_end();
     sorted_.clear();
     for (const Edge& e : edges.edges())
-        sorted_.push_back({e.x0, e.y0, e.y1, (e.x1 - e.x0) / (e.y1 - e.y0), e.dir});
+        sorted_.push_back({e.x0 - float(x0_), e.y0, e.y1, (e.x1 - e.x0) / (e.y1 - e.y0), e.dir});
     if (sorted_.empty() || width_ <= 0) return;
     std::sort(sorted_.begin(), sorted_.end(),
               [](const Active& a, const Active& b) { return a.y0 < b.y0; });
     if (antialias && row_.width() != width_) row_.reset(width_);
     active_.clear();
     std::size_t next = 0;
-    int y = std::max(0, int(sorted_[0].y0));
-    while (y < height && (next < sorted_.size() || !active_.empty())) {
-        if (active_.empty()) y = std::max(y, int(sorted_[next].y0)); // skip empty rows
+    int y = std::max(edges.row_begin(), int(sorted_[0].y0));
+    while (y < row_end && (next < sorted_.size() || !active_.empty())) {
+        if (active_.empty()) { // skip empty rows, but never past the band
+            y = std::max(y, int(sorted_[next].y0));
+            if (y >= row_end) break;
+        }
         const float bottom = float(y + 1);
         while (next < sorted_.size() && sorted_[next].y0 < bottom)
             active_.push_back(sorted_[next++]);
@@ -43,7 +47,7 @@ void Rasterizer::row_antialiased(int y, FillRule rule, SpanSink& sink) {
         row_.add_segment(std::clamp(xa, 0.0f, w), ya - top, std::clamp(xb, 0.0f, w), yb - top,
                          a.dir);
     }
-    sweep_row(row_, y, rule, coverage_, sink);
+    sweep_row(row_, y, x0_, rule, coverage_, sink);
 }
 
 void Rasterizer::row_aliased(int y, FillRule rule, SpanSink& sink) {
@@ -64,7 +68,7 @@ void Rasterizer::row_aliased(int y, FillRule rule, SpanSink& sink) {
         const float next = i + 1 < crossings_.size() ? crossings_[i + 1].x : float(width_) + 1.0f;
         const int x0 = std::max(0, int(std::ceil(crossings_[i].x - 0.5f)));
         const int x1 = std::min(width_, int(std::ceil(next - 0.5f)));
-        if (x1 > x0) sink.span({y, x0, x1 - x0, coverage_.data() + x0});
+        if (x1 > x0) sink.span({y, x0_ + x0, x1 - x0, coverage_.data() + x0});
     }
 }
 

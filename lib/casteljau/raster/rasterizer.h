@@ -23,6 +23,8 @@ namespace casteljau {
 
 class Rasterizer {
   public:
+    // Emits the spans of the rows [edges.row_begin(), edges.row_end()), in the
+    // clip rectangle's columns, in absolute pixel coordinates.
     void fill(const EdgeList& edges, FillRule rule, bool antialias, SpanSink& sink);
 
   private:
@@ -39,7 +41,7 @@ class Rasterizer {
     std::vector<Crossing> crossings_;
     std::vector<float> coverage_;
     CoverageRow row_;
-    int width_ = 0;
+    int width_ = 0, x0_ = 0;
 };
 
 } // namespace casteljau

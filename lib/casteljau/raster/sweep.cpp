@@ -10,7 +10,7 @@ namespace {
 constexpr float kInvisible = 1e-6f;
 } // namespace
 
-void sweep_row(CoverageRow& row, int y, FillRule rule, std::vector<float>& scratch,
+void sweep_row(CoverageRow& row, int y, int x_offset, FillRule rule, std::vector<float>& scratch,
                SpanSink& sink) {
     const int begin = row.begin();
     int end = std::min(row.end(), row.width());
@@ -43,7 +43,7 @@ void sweep_row(CoverageRow& row, int y, FillRule rule, std::vector<float>& scrat
         while (i < end && cov[i] < kInvisible) ++i;
         const int start = i;
         while (i < end && cov[i] >= kInvisible) ++i;
-        if (i > start) sink.span({y, start, i - start, cov + start});
+        if (i > start) sink.span({y, x_offset + start, i - start, cov + start});
     }
 }
 

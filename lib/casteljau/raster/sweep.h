@@ -30,6 +30,8 @@ inline float apply_fill_rule(float s, FillRule rule) {
 // A running sum still nonzero after the last touched column (an outline that
 // extends past the right border) covers the rest of the row.
 // `scratch` holds the coverage values and is grown as needed.
-void sweep_row(CoverageRow& row, int y, FillRule rule, std::vector<float>& scratch, SpanSink& sink);
+// Row column i is pixel x_offset + i.
+void sweep_row(CoverageRow& row, int y, int x_offset, FillRule rule, std::vector<float>& scratch,
+               SpanSink& sink);
 
 } // namespace casteljau

@@ -35,7 +35,15 @@ Rect node_bounds(const Node& n, const Affine& view) {
 
 RenderStats Renderer::render(const Scene& scene, const Affine& view, Canvas& canvas,
                              const RenderOptions& options) {
+    const int x0 = canvas.origin_x(), y0 = canvas.origin_y();
+    return render(scene, view, canvas, options,
+                  {x0, y0, x0 + canvas.width(), y0 + canvas.height()});
+}
+
+RenderStats Renderer::render(const Scene& scene, const Affine& view, Canvas& canvas,
+                             const RenderOptions& options, const PixelRect& frame) {
     view_ = view;
+    frame_ = frame;
     options_ = &options;
     stats_ = {};
     draw_group(scene.root, canvas, 0);
@@ -82,13 +90,15 @@ void Renderer::draw_shape(const Shape& s, Canvas& target) {
     const Fill& f = *s.fill;
     const Premul color = premultiply(f.color, f.opacity * s.opacity);
     if (color.a <= 0.0f) return;
-    const Affine to_target =
-        Affine::translate({-double(target.origin_x()), -double(target.origin_y())}) * view_ *
-        s.transform;
+    // Columns: the target's (a layer's own, or the frame's). Rows: clipped to
+    // the frame, drawn for the target's band only (see EdgeList), so that a
+    // band gets the same edges as the whole frame.
+    const PixelRect clip{target.origin_x(), frame_.y0, target.origin_x() + target.width(),
+                         frame_.y1};
     auto t = Clock::now();
-    edges_.reset(target.width(), target.height());
-    const FlattenStats fs =
-        add_path_edges(s.path, to_target, options_->flatten, edges_, options_->measure_error);
+    edges_.reset(clip, target.origin_y(), target.origin_y() + target.height());
+    const FlattenStats fs = add_path_edges(s.path, view_ * s.transform, options_->flatten, edges_,
+                                           options_->measure_error);
     stats_.flatten.curves_in += fs.curves_in;
     stats_.flatten.segments_out += fs.segments_out;
     stats_.flatten.max_depth = std::max(stats_.flatten.max_depth, fs.max_depth);

@@ -32,9 +32,13 @@ struct RenderStats {
 class Renderer {
   public:
     // Draws `scene` onto `canvas`, mapping scene device space by `view`
-    // (e.g. a scale to the output size).
+    // (e.g. a scale to the output size). `frame` is the whole image in pixels
+    // when `canvas` is one band of it (its origin tells where); edges are
+    // clipped to the frame's rows so that bands match the whole bit for bit.
     RenderStats render(const Scene& scene, const Affine& view, Canvas& canvas,
                        const RenderOptions& options);
+    RenderStats render(const Scene& scene, const Affine& view, Canvas& canvas,
+                       const RenderOptions& options, const PixelRect& frame);
 
   private:
     void draw_group(const Group& g, Canvas& target, int depth);
@@ -45,6 +49,7 @@ class Renderer {
     Rasterizer raster_;
     std::vector<std::unique_ptr<Canvas>> layers_; // one per group nesting depth
     Affine view_;
+    PixelRect frame_;
     const RenderOptions* options_ = nullptr;
     RenderStats stats_;
 };
