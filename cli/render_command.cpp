@@ -225,7 +225,7 @@ Command add_render_command(CLI::App& app) {
         ->transform(CLI::CheckedTransformer(onoff, CLI::ignore_case));
     cmd->add_option("--background", a->background, "Background color (default transparent)");
     cmd->add_option("--threads", a->threads,
-                    "Threads (accepted; rendering is single-threaded for now)")
+                    "Threads rendering bands of rows (default: all cores); the output is the same")
         ->check(CLI::Range(1, 1024));
     cmd->add_option("--repeat", a->repeat,
                     "Render the parsed scene N times; stage times are medians")
