@@ -186,6 +186,23 @@ Rect Path::bounds() const {
     return r;
 }
 
+Rect Path::control_bounds() const {
+    Rect r = Rect::empty();
+    for (const Subpath& s : subpaths_) {
+        r = r.united(s.start);
+        for (const Segment& seg : s.segments)
+            std::visit(
+                [&r](const auto& c) {
+                    if constexpr (std::is_same_v<std::decay_t<decltype(c)>, Conic>)
+                        r = r.united(c.p0).united(c.p1).united(c.p2);
+                    else
+                        for (Point p : c.p) r = r.united(p);
+                },
+                seg);
+    }
+    return r;
+}
+
 Point Path::eval(std::size_t subpath, double u) const {
     const Subpath& s = subpaths_[subpath];
     if (s.segments.empty()) return s.start;

@@ -71,7 +71,10 @@ class Path {
     std::size_t segment_count() const;
 
     void transform(const Affine& m);
+    // Tight bounds (curve extrema), and the cheaper bounds of all control
+    // points, which contain the path too (convex hull property).
     Rect bounds() const;
+    Rect control_bounds() const;
 
     // The subpath's global parameterisation; u is clamped to [0, segments].
     Point eval(std::size_t subpath, double u) const;

@@ -23,8 +23,8 @@ class Canvas {
     Canvas() = default;
     // Transparent, with its top-left corner at (ox, oy) of the parent canvas.
     Canvas(int width, int height, int ox = 0, int oy = 0);
-    // Resizes (keeping storage when large enough) and clears to transparent.
-    void reset(int width, int height, int ox = 0, int oy = 0);
+    // Resizes (keeping storage when large enough) and clears to `clear`.
+    void reset(int width, int height, int ox = 0, int oy = 0, Premul clear = {});
 
     int width() const { return w_; }
     int height() const { return h_; }

@@ -1,6 +1,7 @@
 #include "casteljau/raster/sweep.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace casteljau {
 
@@ -31,10 +32,12 @@ void sweep_row(CoverageRow& row, int y, int x_offset, FillRule rule, std::vector
     }
     std::fill(acc + end, acc + row.end(), 0.0f);
     row.clear_range();
-    // Outlines culled or clamped at the right border leave the winding
-    // nonzero past the last touched column: it holds up to the row's end.
-    const float rest = apply_fill_rule(s, rule);
-    if (rest >= kInvisible) {
+    // Past the last touched column only edges clamped onto the right border
+    // remain (they are vertical there), so the winding is a whole number; the
+    // sum carries float residue (~1e-7 per edge), which must not paint the
+    // rest of the row faintly. Rounded, it is the winding of the rest.
+    const float rest = apply_fill_rule(std::nearbyint(s), rule);
+    if (rest > 0.0f) {
         std::fill(cov + end, cov + row.width(), rest);
         end = row.width();
     }

@@ -1,8 +1,11 @@
-// Rendering in horizontal bands on several threads.
+// Rendering in horizontal bands, on one thread or several.
 //
-// The frame is cut into `threads` bands of rows; each thread renders the whole
-// scene into its own band canvas with its own Renderer, and the bands are
-// copied into the frame. Edge geometry is always clipped to the frame, never
+// The frame is cut into bands of kBandRows rows, dealt to the threads in
+// turn; a thread renders the whole scene into its own band canvas with its
+// own Renderer, band after band, and copies each band into the frame. Bands
+// pay even on one thread: a band canvas (kBandRows x width x 16 bytes) stays
+// in cache while every shape crossing it is composited, where a whole float
+// frame would not (measured in bench/render). Edge geometry is always clipped to the frame, never
 // to a band (see EdgeList), and every pixel is composited by the same shapes
 // in the same order, so the result is bit-identical to one thread (tested).
 // Flattening is repeated per band for shapes that cross several bands; pieces
@@ -15,6 +18,10 @@
 #include <vector>
 
 namespace casteljau {
+
+// 128 rows of a 1024 px wide frame are 2 MiB of float RGBA, about a mid-level
+// cache; 64 and 256 measured slower on the dense scene (bench/render).
+inline constexpr int kBandRows = 128;
 
 class BandRenderer {
   public:

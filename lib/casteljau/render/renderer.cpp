@@ -15,17 +15,19 @@ double ms_since(Clock::time_point t) {
     return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
-// Device-space bounds of a node: the transformed corners of each shape's tight
-// user-space bounds (conservative under rotation, exact otherwise).
+// The device box of a user-space box: its four corners mapped (conservative
+// under rotation, exact otherwise).
+Rect device_box(const Rect& b, const Affine& m) {
+    if (b.is_empty()) return b;
+    return Rect::from_points(m * b.min(), m * b.max())
+        .united(m * Point{b.x0, b.y1})
+        .united(m * Point{b.x1, b.y0});
+}
+
+// Device-space bounds of a node, from the shapes' tight user-space bounds.
 Rect node_bounds(const Node& n, const Affine& view) {
-    if (const Shape* s = std::get_if<Shape>(&n.item)) {
-        const Rect b = s->path.bounds();
-        if (b.is_empty()) return b;
-        const Affine m = view * s->transform;
-        return Rect::from_points(m * b.min(), m * b.max())
-            .united(m * Point{b.x0, b.y1})
-            .united(m * Point{b.x1, b.y0});
-    }
+    if (const Shape* s = std::get_if<Shape>(&n.item))
+        return device_box(s->path.bounds(), view * s->transform);
     Rect r = Rect::empty();
     for (const Node& c : std::get<Group>(n.item).children) r = r.united(node_bounds(c, view));
     return r;
@@ -90,6 +92,13 @@ void Renderer::draw_shape(const Shape& s, Canvas& target) {
     const Fill& f = *s.fill;
     const Premul color = premultiply(f.color, f.opacity * s.opacity);
     if (color.a <= 0.0f) return;
+    // A shape wholly above, below or right of the target draws nothing there
+    // (left of it, it can still change the winding, see path_edges.h).
+    const Rect box = device_box(s.path.control_bounds(), view_ * s.transform);
+    if (box.is_empty() || box.y1 <= target.origin_y() ||
+        box.y0 >= target.origin_y() + target.height() ||
+        box.x0 >= target.origin_x() + target.width())
+        return;
     // Columns: the target's (a layer's own, or the frame's). Rows: clipped to
     // the frame, drawn for the target's band only (see EdgeList), so that a
     // band gets the same edges as the whole frame.
