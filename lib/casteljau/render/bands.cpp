@@ -23,14 +23,7 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
         for (int b = t; b < bands; b += n) {
             const int y0 = b * kBandRows, y1 = std::min(h, y0 + kBandRows);
             band.reset(w, y1 - y0, 0, y0, background);
-            const RenderStats s =
-                renderers_[std::size_t(t)]->render(scene, view, band, options, frame);
-            total.flatten.curves_in += s.flatten.curves_in;
-            total.flatten.segments_out += s.flatten.segments_out;
-            total.flatten.max_depth = std::max(total.flatten.max_depth, s.flatten.max_depth);
-            total.flatten.max_error = std::max(total.flatten.max_error, s.flatten.max_error);
-            total.flatten_ms += s.flatten_ms;
-            total.raster_ms += s.raster_ms;
+            total += renderers_[std::size_t(t)]->render(scene, view, band, options, frame);
             for (int y = y0; y < y1; ++y)
                 std::memcpy(static_cast<void*>(canvas.row(y)), band.row(y - y0),
                             std::size_t(w) * sizeof(Premul));
@@ -44,14 +37,7 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
         for (std::thread& th : pool) th.join();
     }
     RenderStats total;
-    for (const RenderStats& s : stats) {
-        total.flatten.curves_in += s.flatten.curves_in;
-        total.flatten.segments_out += s.flatten.segments_out;
-        total.flatten.max_depth = std::max(total.flatten.max_depth, s.flatten.max_depth);
-        total.flatten.max_error = std::max(total.flatten.max_error, s.flatten.max_error);
-        total.flatten_ms += s.flatten_ms;
-        total.raster_ms += s.raster_ms;
-    }
+    for (const RenderStats& s : stats) total += s;
     return total;
 }
 

@@ -35,6 +35,16 @@ Rect node_bounds(const Node& n, const Affine& view) {
 
 } // namespace
 
+RenderStats& RenderStats::operator+=(const RenderStats& o) {
+    flatten.curves_in += o.flatten.curves_in;
+    flatten.segments_out += o.flatten.segments_out;
+    flatten.max_depth = std::max(flatten.max_depth, o.flatten.max_depth);
+    flatten.max_error = std::max(flatten.max_error, o.flatten.max_error);
+    flatten_ms += o.flatten_ms;
+    raster_ms += o.raster_ms;
+    return *this;
+}
+
 RenderStats Renderer::render(const Scene& scene, const Affine& view, Canvas& canvas,
                              const RenderOptions& options) {
     const int x0 = canvas.origin_x(), y0 = canvas.origin_y();
@@ -106,12 +116,10 @@ void Renderer::draw_shape(const Shape& s, Canvas& target) {
                          frame_.y1};
     auto t = Clock::now();
     edges_.reset(clip, target.origin_y(), target.origin_y() + target.height());
-    const FlattenStats fs = add_path_edges(s.path, view_ * s.transform, options_->flatten, edges_,
-                                           options_->measure_error);
-    stats_.flatten.curves_in += fs.curves_in;
-    stats_.flatten.segments_out += fs.segments_out;
-    stats_.flatten.max_depth = std::max(stats_.flatten.max_depth, fs.max_depth);
-    stats_.flatten.max_error = std::max(stats_.flatten.max_error, fs.max_error);
+    RenderStats shape;
+    shape.flatten = add_path_edges(s.path, view_ * s.transform, options_->flatten, edges_,
+                                   options_->measure_error);
+    stats_ += shape;
     stats_.flatten_ms += ms_since(t);
     t = Clock::now();
     SolidSpanPainter painter(target, color);

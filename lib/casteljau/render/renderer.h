@@ -27,6 +27,9 @@ struct RenderStats {
     FlattenStats flatten;
     double flatten_ms = 0; // edge building: culling, flattening, clipping
     double raster_ms = 0;  // accumulation, sweep and compositing
+
+    // Sums counts and times; keeps the largest depth and error.
+    RenderStats& operator+=(const RenderStats& o);
 };
 
 class Renderer {
