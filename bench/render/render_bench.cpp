@@ -2,6 +2,9 @@
 // encode): the bundled dense scene (examples/svg/dense.svg, 3000 shapes at
 // 1024 x 768) and a full-canvas rectangle, whose pixels/s are compared with a
 // memset of the same buffer (the bandwidth limit) in the same run.
+#include "casteljau/curve/path_data.h"
+#include "casteljau/raster/path_edges.h"
+#include "casteljau/raster/rasterizer.h"
 #include "casteljau/render/bands.h"
 #include "casteljau/svg/reader.h"
 
@@ -78,6 +81,31 @@ void BM_MemsetSameBuffer(benchmark::State& state) {
         benchmark::Counter(2048.0 * 2048 * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
 BENCHMARK(BM_MemsetSameBuffer)->Unit(benchmark::kMillisecond);
+
+// The rasterizer alone (edges -> spans, no canvas) on a 24 px circle placed
+// in a 64 px frame and in a 16384 px frame: the cost follows the outline and
+// the covered spans, not the frame's area, so the two should match.
+void BM_SmallShapeRaster(benchmark::State& state) {
+    const int side = int(state.range(0));
+    const Path circle = parse_path_data("M 44 32 A 12 12 0 1 1 20 32 A 12 12 0 1 1 44 32 Z").path;
+    struct Count final : SpanSink {
+        long pixels = 0;
+        void span(const Span& s) override { pixels += s.len; }
+    } sink;
+    EdgeList edges;
+    Rasterizer raster;
+    for (auto _ : state) {
+        edges.reset(side, side);
+        add_path_edges(circle, Affine::identity(), {}, edges);
+        raster.fill(edges, FillRule::NonZero, true, sink);
+    }
+    benchmark::DoNotOptimize(sink.pixels);
+}
+BENCHMARK(BM_SmallShapeRaster)
+    ->Arg(64)
+    ->Arg(16384)
+    ->ArgName("frame")
+    ->Unit(benchmark::kMicrosecond);
 
 } // namespace
 } // namespace casteljau

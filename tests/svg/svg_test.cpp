@@ -114,6 +114,7 @@ TEST(Reader, BadInputNamesFileLineAndElement) {
          "t.svg:2: <rect>: attribute height: '1x0'"},
         {"<circle r='nan'/>", R"(width="10" height="10")", "t.svg:2: <circle>: attribute r"},
         {"<circle r='-3'/>", R"(width="10" height="10")", "negative"},
+        {"<ellipse rx='inf' ry='2'/>", R"(width="10" height="10")", "t.svg:2: <ellipse>: attribute rx: 'inf'"},
         {"<rect width='1e999' height='1'/>", R"(width="10" height="10")", "attribute width"},
         {"<rect fill='blurple' width='1' height='1'/>", R"(width="10" height="10")",
          "t.svg:2: <rect>: property fill"},
