@@ -23,11 +23,7 @@ void Canvas::composite_span(const Span& s, Premul c) {
             d[i] = c;
             continue;
         }
-        const float inv = 1.0f - k * c.a;
-        d[i].r = k * c.r + inv * d[i].r;
-        d[i].g = k * c.g + inv * d[i].g;
-        d[i].b = k * c.b + inv * d[i].b;
-        d[i].a = k * c.a + inv * d[i].a;
+        blend_over(d[i], c, k);
     }
 }
 
@@ -39,11 +35,7 @@ void Canvas::composite_layer(const Canvas& layer, float opacity) {
         const Premul* s = layer.row(y - dy) + (x0 - dx);
         Premul* d = row(y) + x0;
         for (int i = 0; i < x1 - x0; ++i) {
-            const float inv = 1.0f - opacity * s[i].a;
-            d[i].r = opacity * s[i].r + inv * d[i].r;
-            d[i].g = opacity * s[i].g + inv * d[i].g;
-            d[i].b = opacity * s[i].b + inv * d[i].b;
-            d[i].a = opacity * s[i].a + inv * d[i].a;
+            blend_over(d[i], s[i], opacity);
         }
     }
 }

@@ -12,11 +12,21 @@
 #pragma once
 
 #include "casteljau/paint/color.h"
+#include "casteljau/paint/gradient.h"
 #include "casteljau/raster/span.h"
 
 #include <vector>
 
 namespace casteljau {
+
+// Source-over of premultiplied `s` scaled by coverage k onto d.
+inline void blend_over(Premul& d, Premul s, float k) {
+    const float inv = 1.0f - k * s.a;
+    d.r = k * s.r + inv * d.r;
+    d.g = k * s.g + inv * d.g;
+    d.b = k * s.b + inv * d.b;
+    d.a = k * s.a + inv * d.a;
+}
 
 class Canvas {
   public:
@@ -58,6 +68,21 @@ class SolidSpanPainter final : public SpanSink {
   private:
     Canvas& canvas_;
     Premul color_;
+};
+
+// Adapts the span interface to gradient compositing: each pixel's color comes
+// from the shader at the pixel's centre.
+class GradientSpanPainter final : public SpanSink {
+  public:
+    GradientSpanPainter(Canvas& c, const GradientShader& shader) : canvas_(c), shader_(shader) {}
+    void span(const Span& s) override {
+        Premul* d = canvas_.row(s.y - canvas_.origin_y()) + (s.x - canvas_.origin_x());
+        for (int i = 0; i < s.len; ++i) blend_over(d[i], shader_.at(s.x + i, s.y), s.coverage[i]);
+    }
+
+  private:
+    Canvas& canvas_;
+    const GradientShader& shader_;
 };
 
 } // namespace casteljau

@@ -100,8 +100,9 @@ void Renderer::draw_group(const Group& g, Canvas& target, int depth) {
 void Renderer::draw_shape(const Shape& s, Canvas& target) {
     if (!s.fill || s.opacity <= 0.0f) return;
     const Fill& f = *s.fill;
-    const Premul color = premultiply(f.color, f.opacity * s.opacity);
-    if (color.a <= 0.0f) return;
+    const float opacity = f.opacity * s.opacity;
+    const Premul color = premultiply(f.color, opacity);
+    if (!f.gradient && color.a <= 0.0f) return;
     // A shape wholly above, below or right of the target draws nothing there
     // (left of it, it can still change the winding, see path_edges.h).
     const Rect box = device_box(s.path.control_bounds(), view_ * s.transform);
@@ -122,8 +123,26 @@ void Renderer::draw_shape(const Shape& s, Canvas& target) {
     stats_ += shape;
     stats_.flatten_ms += ms_since(t);
     t = Clock::now();
-    SolidSpanPainter painter(target, color);
-    raster_.fill(edges_, f.rule, options_->antialias, painter);
+    if (f.gradient) {
+        // Gradient space -> device: the shape's transform, then for
+        // objectBoundingBox units the unit square onto the shape's box (an
+        // empty box paints nothing, SVG 1.1 13.2.2), then gradientTransform.
+        const Gradient& g = *f.gradient;
+        Affine to_device = view_ * s.transform;
+        if (g.object_bounding_box) {
+            const Rect b = s.path.bounds();
+            if (!(b.width() > 0 && b.height() > 0)) return;
+            to_device = to_device * Affine::translate(b.min().to_vec()) *
+                        Affine::scale(b.width(), b.height());
+        }
+        GradientShader& shader = gradient_shader_;
+        if (!shader.prepare(g, to_device * g.transform, opacity)) return;
+        GradientSpanPainter painter(target, shader);
+        raster_.fill(edges_, f.rule, options_->antialias, painter);
+    } else {
+        SolidSpanPainter painter(target, color);
+        raster_.fill(edges_, f.rule, options_->antialias, painter);
+    }
     stats_.raster_ms += ms_since(t);
 }
 

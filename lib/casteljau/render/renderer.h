@@ -8,6 +8,7 @@
 
 #include "casteljau/flatten/path_flatten.h"
 #include "casteljau/paint/canvas.h"
+#include "casteljau/paint/gradient.h"
 #include "casteljau/raster/edge.h"
 #include "casteljau/raster/rasterizer.h"
 #include "casteljau/scene/scene.h"
@@ -50,6 +51,7 @@ class Renderer {
 
     EdgeList edges_;
     Rasterizer raster_;
+    GradientShader gradient_shader_;              // its color table is reused across shapes
     std::vector<std::unique_ptr<Canvas>> layers_; // one per group nesting depth
     Affine view_;
     PixelRect frame_;

@@ -10,8 +10,10 @@
 
 #include "casteljau/curve/path.h"
 #include "casteljau/paint/color.h"
+#include "casteljau/paint/gradient.h"
 #include "casteljau/raster/sweep.h"
 
+#include <memory>
 #include <optional>
 #include <variant>
 #include <vector>
@@ -19,8 +21,9 @@
 namespace casteljau {
 
 struct Fill {
-    Rgba color;
-    float opacity = 1; // fill-opacity
+    Rgba color;                               // used when there is no gradient
+    std::shared_ptr<const Gradient> gradient; // shared by every shape that uses it
+    float opacity = 1;                        // fill-opacity
     FillRule rule = FillRule::NonZero;
 };
 

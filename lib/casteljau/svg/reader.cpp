@@ -1,6 +1,7 @@
 #include "casteljau/svg/reader.h"
 
 #include "casteljau/curve/path_data.h"
+#include "casteljau/svg/detail/gradients.h"
 #include "casteljau/svg/shapes.h"
 #include "casteljau/svg/style.h"
 #include "casteljau/svg/transform_list.h"
@@ -148,6 +149,7 @@ class Reader {
         }
         vw_ = box ? vb[2] : scene.width;
         vh_ = box ? vb[3] : scene.height;
+        gradients_.emplace(root, vw_, vh_);
         if (!box) return Affine::identity();
         return view_box_transform(root, scene, vb);
     }
@@ -256,11 +258,7 @@ class Reader {
         s.transform = m;
         s.opacity = props.opacity;
         s.source_line = line_of(n.offset_debug());
-        if (style.fill.from_url || style.stroke.from_url)
-            warn_once(n,
-                      "paint servers (url(#...)) are not drawn yet: their fallback color is used");
-        if (const auto c = resolve_paint(style.fill, style))
-            s.fill = Fill{*c, style.fill_opacity, style.fill_rule};
+        s.fill = fill(n, style);
         if (const auto c = resolve_paint(style.stroke, style); c && style.stroke_width > 0) {
             s.stroke = Stroke{*c,
                               style.stroke_opacity,
@@ -273,6 +271,20 @@ class Reader {
             warn_once(n, "strokes are parsed but not drawn yet");
         }
         return s;
+    }
+
+    // The fill paint: a color, or a gradient by url(#id) with its fallback
+    // color when the reference names no usable gradient (SVG 1.1, 11.2).
+    std::optional<Fill> fill(const pugi::xml_node& n, const StyleState& style) {
+        if (style.fill.from_url) {
+            const svg_detail::GradientRef g = gradients_->resolve(style.fill.url);
+            if (!g.error.empty()) fail(g.where, g.error);
+            if (!g.warning.empty()) warn_once(g.where ? g.where : n, g.warning);
+            if (g.gradient) return Fill{{}, g.gradient, style.fill_opacity, style.fill_rule};
+        }
+        if (const auto c = resolve_paint(style.fill, style))
+            return Fill{*c, nullptr, style.fill_opacity, style.fill_rule};
+        return std::nullopt;
     }
 
     Path geometry(const pugi::xml_node& n, std::string_view name) {
@@ -319,6 +331,7 @@ class Reader {
     std::set<std::string> warned_;
     std::size_t elements_ = 0;
     double vw_ = 0, vh_ = 0; // viewport size in user units, for percentages
+    std::optional<svg_detail::GradientIndex> gradients_;
 };
 
 } // namespace

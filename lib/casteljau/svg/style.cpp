@@ -33,18 +33,24 @@ std::optional<double> parse_number(std::string_view s, std::string_view* rest = 
 
 std::optional<PaintSpec> parse_paint(std::string_view v) {
     v = trim(v);
-    if (v == "none") return PaintSpec{PaintSpec::Kind::None, {}, false};
-    if (v == "currentColor") return PaintSpec{PaintSpec::Kind::CurrentColor, {}, false};
+    if (v == "none") return PaintSpec{PaintSpec::Kind::None, {}, false, {}};
+    if (v == "currentColor") return PaintSpec{PaintSpec::Kind::CurrentColor, {}, false, {}};
     if (v.rfind("url(", 0) == 0) {
         const std::size_t close = v.find(')');
         if (close == v.npos) return std::nullopt;
+        std::string_view ref = trim(v.substr(4, close - 4));
+        if (ref.size() >= 2 && (ref.front() == '"' || ref.front() == '\'') &&
+            ref.back() == ref.front())
+            ref = ref.substr(1, ref.size() - 2);
+        if (ref.empty() || ref.front() != '#') return std::nullopt; // only local references
         const std::string_view fallback = trim(v.substr(close + 1));
-        if (fallback.empty()) return PaintSpec{PaintSpec::Kind::None, {}, true};
-        auto p = parse_paint(fallback);
-        if (p) p->from_url = true;
+        std::optional<PaintSpec> p = PaintSpec{PaintSpec::Kind::None, {}, true, {}};
+        if (!fallback.empty() && !(p = parse_paint(fallback))) return std::nullopt;
+        p->from_url = true;
+        p->url = std::string(ref.substr(1));
         return p;
     }
-    if (const auto c = parse_color(v)) return PaintSpec{PaintSpec::Kind::Color, *c, false};
+    if (const auto c = parse_color(v)) return PaintSpec{PaintSpec::Kind::Color, *c, false, {}};
     return std::nullopt;
 }
 

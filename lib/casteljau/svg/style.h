@@ -23,11 +23,12 @@ namespace casteljau {
 struct PaintSpec {
     enum class Kind { None, Color, CurrentColor } kind = Kind::None;
     Rgba color;
-    bool from_url = false; // url(#id): drawn with its fallback until paint servers exist
+    bool from_url = false; // url(#id), with `color`/`kind` as its fallback
+    std::string url;       // the id after '#', when from_url
 };
 
 struct StyleState {
-    PaintSpec fill{PaintSpec::Kind::Color, {0, 0, 0, 1}};
+    PaintSpec fill{PaintSpec::Kind::Color, {0, 0, 0, 1}, false, {}};
     float fill_opacity = 1;
     FillRule fill_rule = FillRule::NonZero;
     PaintSpec stroke;

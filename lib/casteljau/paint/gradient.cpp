@@ -1,0 +1,104 @@
+#include "casteljau/paint/gradient.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace casteljau {
+
+namespace {
+
+float to_linear(float v) {
+    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+float to_srgb(float v) {
+    return v <= 0.0031308f ? v * 12.92f : 1.055f * std::pow(v, 1 / 2.4f) - 0.055f;
+}
+
+Premul lerp(Premul a, Premul b, float t) {
+    return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t,
+            a.a + (b.a - a.a) * t};
+}
+
+double spread(double t, Spread s) {
+    switch (s) {
+    case Spread::Pad:
+        return std::clamp(t, 0.0, 1.0);
+    case Spread::Repeat:
+        return t - std::floor(t);
+    case Spread::Reflect: {
+        const double m = t - 2.0 * std::floor(t * 0.5); // [0, 2)
+        return m > 1.0 ? 2.0 - m : m;
+    }
+    }
+    return t;
+}
+
+} // namespace
+
+bool GradientShader::prepare(const Gradient& g, const Affine& to_device, float opacity) {
+    if (g.stops.empty()) return false;
+    const double det = to_device.determinant();
+    if (!(std::fabs(det) > 1e-12) || !std::isfinite(det)) return false;
+    g_ = &g;
+    inverse_ = to_device.inverse();
+    focal_ = g.focal;
+    if (g.kind == Gradient::Kind::Radial) {
+        // 13.2.3: a focal point outside the circle moves onto it; 0.999 keeps it
+        // inside so that the quadratic above has its single positive root.
+        const Vec2 e = g.focal - g.center;
+        const double limit = 0.999 * g.radius;
+        if (e.length() > limit) focal_ = g.center + e * (limit / e.length());
+    }
+    // The table: stops interpolated in the chosen space, then premultiplied
+    // (premultiplied interpolation: a transparent stop does not darken).
+    const auto premul_stop = [&](const GradientStop& s) {
+        Rgba c = s.color;
+        if (g.linear_light) c = {to_linear(c.r), to_linear(c.g), to_linear(c.b), c.a};
+        return premultiply(c, opacity);
+    };
+    std::size_t k = 0;
+    for (int i = 0; i < kGradientLut; ++i) {
+        const float t = float(i) / float(kGradientLut - 1);
+        while (k < g.stops.size() && g.stops[k].offset < t) ++k;
+        Premul c;
+        if (k == 0)
+            c = premul_stop(g.stops.front());
+        else if (k == g.stops.size())
+            c = premul_stop(g.stops.back());
+        else {
+            const GradientStop &a = g.stops[k - 1], &b = g.stops[k];
+            const float span = b.offset - a.offset;
+            c = lerp(premul_stop(a), premul_stop(b), span > 0 ? (t - a.offset) / span : 1.0f);
+        }
+        if (g.linear_light && c.a > 0) { // back to sRGB encoding, premultiplied
+            const float inv = 1.0f / c.a;
+            c = {to_srgb(c.r * inv) * c.a, to_srgb(c.g * inv) * c.a, to_srgb(c.b * inv) * c.a, c.a};
+        }
+        lut_[std::size_t(i)] = c;
+    }
+    return true;
+}
+
+double GradientShader::parameter(Point p) const {
+    const Point q = inverse_ * p;
+    double t;
+    if (g_->kind == Gradient::Kind::Linear) {
+        const Vec2 axis = g_->p2 - g_->p1;
+        const double len_sq = axis.length_sq();
+        t = len_sq > 0 ? (q - g_->p1).dot(axis) / len_sq : 1.0; // coincident points: the last stop
+    } else {
+        const Vec2 d = q - focal_, e = g_->center - focal_;
+        const double a = e.length_sq() - g_->radius * g_->radius; // < 0: focal inside
+        const double de = d.dot(e);
+        if (g_->radius <= 0) return 1.0; // zero radius: the last stop (13.2.3)
+        t = (de - std::sqrt(std::max(0.0, de * de - a * d.length_sq()))) / a;
+    }
+    return spread(t, g_->spread);
+}
+
+Premul GradientShader::at(int x, int y) const {
+    const double t = parameter({x + 0.5, y + 0.5});
+    return lut_[std::size_t(std::lround(t * (kGradientLut - 1)))];
+}
+
+} // namespace casteljau

@@ -1,0 +1,73 @@
+// Linear and radial gradients (SVG 1.1, chapter 13) and their evaluation.
+//
+// A gradient lives in its own space, mapped to user space by
+// gradientTransform (and, for objectBoundingBox units, by the box: the unit
+// square onto the shape's bounding box). For a point g of gradient space the
+// parameter t is
+//   linear: the projection of g onto p1 -> p2, t = (g - p1).(p2 - p1) / |p2 - p1|^2
+//   radial: the t for which g lies on the circle interpolated between the
+//           focal point (radius 0, t = 0) and the end circle (centre c, radius
+//           r, t = 1): |g - f - t (c - f)| = t r, the positive root of
+//           (e.e - r^2) t^2 - 2 (d.e) t + d.d = 0 with d = g - f, e = c - f;
+//           with f strictly inside the circle (e.e < r^2) exactly one root is
+//           positive: t = (d.e - sqrt((d.e)^2 - (e.e - r^2) d.d)) / (e.e - r^2).
+// then spread (13.2.4): pad clamps t to [0, 1], repeat takes t - floor(t),
+// reflect folds t with period 2. A focal point outside the end circle is moved
+// onto it (13.2.3), and then just inside, where the root above stays defined.
+//
+// Colors between stops are interpolated in premultiplied sRGB-encoded space
+// (or, optionally, premultiplied linear light), through a lookup table of
+// kGradientLut entries: 1/1024 of the gradient's length is below what 8-bit
+// output can resolve.
+#pragma once
+
+#include "casteljau/geom/affine.h"
+#include "casteljau/paint/color.h"
+
+#include <array>
+#include <vector>
+
+namespace casteljau {
+
+enum class Spread { Pad, Reflect, Repeat };
+
+struct GradientStop {
+    float offset = 0; // in [0, 1], nondecreasing along the list
+    Rgba color;       // alpha includes stop-opacity
+};
+
+struct Gradient {
+    enum class Kind { Linear, Radial } kind = Kind::Linear;
+    Point p1{0, 0}, p2{1, 0};                // linear
+    Point center{0.5, 0.5}, focal{0.5, 0.5}; // radial
+    double radius = 0.5;                     // radial
+    Affine transform;                        // gradientTransform
+    bool object_bounding_box = true;         // gradientUnits
+    Spread spread = Spread::Pad;
+    bool linear_light = false; // interpolate in linear light instead of sRGB
+    std::vector<GradientStop> stops;
+};
+
+inline constexpr int kGradientLut = 1024;
+
+// A gradient ready to shade device pixels: the device -> gradient-space map,
+// the geometry, and the color table.
+class GradientShader {
+  public:
+    // `to_device` maps gradient space to device pixels (user transform,
+    // bounding box and gradientTransform composed). False when that map is
+    // singular or the gradient has no stops: then nothing is painted.
+    bool prepare(const Gradient& g, const Affine& to_device, float opacity);
+    // The premultiplied color at the centre of device pixel (x, y).
+    Premul at(int x, int y) const;
+    // The gradient parameter after spread, in [0, 1], at device point p.
+    double parameter(Point p) const;
+
+  private:
+    const Gradient* g_ = nullptr;
+    Affine inverse_;
+    Point focal_;
+    std::array<Premul, kGradientLut> lut_{};
+};
+
+} // namespace casteljau

@@ -1,0 +1,183 @@
+#include "casteljau/svg/detail/gradients.h"
+
+#include "casteljau/svg/color.h"
+#include "casteljau/svg/style.h"
+#include "casteljau/svg/transform_list.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <optional>
+#include <set>
+#include <vector>
+
+namespace casteljau::svg_detail {
+
+namespace {
+
+bool is_gradient(const pugi::xml_node& n) {
+    return std::strcmp(n.name(), "linearGradient") == 0 ||
+           std::strcmp(n.name(), "radialGradient") == 0;
+}
+
+const char* href_of(const pugi::xml_node& n) {
+    if (const pugi::xml_attribute a = n.attribute("href")) return a.value();
+    if (const pugi::xml_attribute a = n.attribute("xlink:href")) return a.value();
+    return nullptr;
+}
+
+// The value of a declaration in a style attribute, or "".
+std::string style_value(const pugi::xml_node& n, const char* property) {
+    const std::string css = n.attribute("style").value();
+    const std::string key = property;
+    std::size_t at = 0;
+    while ((at = css.find(key, at)) != std::string::npos) {
+        const std::size_t colon = css.find_first_not_of(" \t", at + key.size());
+        const bool starts = at == 0 || css[at - 1] == ';' || css[at - 1] == ' ';
+        if (starts && colon != std::string::npos && css[colon] == ':') {
+            const std::size_t end = css.find(';', colon);
+            return css.substr(colon + 1,
+                              end == std::string::npos ? std::string::npos : end - colon - 1);
+        }
+        at += key.size();
+    }
+    return "";
+}
+
+} // namespace
+
+GradientIndex::GradientIndex(const pugi::xml_node& root, double viewport_w, double viewport_h)
+    : vw_(viewport_w), vh_(viewport_h) {
+    // Depth-first over the whole document, first definition of an id wins.
+    struct Walker : pugi::xml_tree_walker {
+        std::map<std::string, pugi::xml_node>* map;
+        bool for_each(pugi::xml_node& n) override {
+            if (n.type() == pugi::node_element)
+                if (const pugi::xml_attribute id = n.attribute("id")) map->emplace(id.value(), n);
+            return true;
+        }
+    } walker;
+    walker.map = &by_id_;
+    pugi::xml_node(root).traverse(walker);
+}
+
+GradientRef GradientIndex::resolve(const std::string& id) {
+    if (const auto it = cache_.find(id); it != cache_.end()) return it->second;
+    GradientRef r;
+    const auto it = by_id_.find(id);
+    if (it == by_id_.end() || !is_gradient(it->second)) {
+        r.warning = "url(#" + id + ") names no gradient: the fallback color (or none) is used";
+    } else {
+        r = build(it->second);
+    }
+    return cache_[id] = r;
+}
+
+GradientRef GradientIndex::build(pugi::xml_node node) {
+    GradientRef r;
+    r.where = node;
+    // The href chain, cut at a missing target, a cycle or the length limit.
+    std::vector<pugi::xml_node> chain{node};
+    std::set<const void*> seen{node.internal_object()};
+    while (const char* href = href_of(chain.back())) {
+        const auto it = href[0] == '#' ? by_id_.find(href + 1) : by_id_.end();
+        if (it == by_id_.end() || !is_gradient(it->second)) {
+            r.warning = std::string("href '") + href + "' names no gradient; ignored";
+            break;
+        }
+        if (!seen.insert(it->second.internal_object()).second ||
+            int(chain.size()) >= kMaxHrefChain) {
+            r.warning = std::string("href '") + href + "' makes a cycle; the chain is cut there";
+            break;
+        }
+        chain.push_back(it->second);
+    }
+    const auto attr = [&](const char* name) -> pugi::xml_attribute {
+        for (const pugi::xml_node& n : chain)
+            if (const pugi::xml_attribute a = n.attribute(name)) return a;
+        return {};
+    };
+    auto g = std::make_shared<Gradient>();
+    g->kind = std::strcmp(node.name(), "radialGradient") == 0 ? Gradient::Kind::Radial
+                                                              : Gradient::Kind::Linear;
+    if (const pugi::xml_attribute u = attr("gradientUnits")) {
+        const std::string v = u.value();
+        if (v != "userSpaceOnUse" && v != "objectBoundingBox")
+            return r.error = "gradientUnits: '" + v + "'", r;
+        g->object_bounding_box = v == "objectBoundingBox";
+    }
+    if (const pugi::xml_attribute s = attr("spreadMethod")) {
+        const std::string v = s.value();
+        if (v == "pad")
+            g->spread = Spread::Pad;
+        else if (v == "reflect")
+            g->spread = Spread::Reflect;
+        else if (v == "repeat")
+            g->spread = Spread::Repeat;
+        else
+            return r.error = "spreadMethod: '" + v + "' is not pad, reflect or repeat", r;
+    }
+    if (const pugi::xml_attribute t = attr("gradientTransform")) {
+        const TransformResult tr = parse_transform_list(t.value());
+        if (!tr.error.empty()) return r.error = "gradientTransform: " + tr.error, r;
+        g->transform = tr.transform;
+    }
+    // Coordinates: fractions of the box (percentages too) or user lengths.
+    const double diag = std::sqrt((vw_ * vw_ + vh_ * vh_) / 2);
+    const auto coord = [&](const char* name, double fallback,
+                           double user_ref) -> std::optional<double> {
+        const pugi::xml_attribute a = attr(name);
+        if (!a) return fallback;
+        return parse_length(a.value(), g->object_bounding_box ? 1.0 : user_ref);
+    };
+    std::string bad;
+    const auto get = [&](const char* name, double fallback, double ref) {
+        const auto v = coord(name, fallback, ref);
+        if (!v && bad.empty())
+            bad = std::string(name) + ": '" + attr(name).value() + "' is not a length";
+        return v.value_or(0);
+    };
+    const double w = g->object_bounding_box ? 1 : vw_, h = g->object_bounding_box ? 1 : vh_;
+    const double d = g->object_bounding_box ? 1 : diag;
+    if (g->kind == Gradient::Kind::Linear) {
+        g->p1 = {get("x1", 0, vw_), get("y1", 0, vh_)};
+        g->p2 = {get("x2", w, vw_), get("y2", 0, vh_)};
+    } else {
+        g->center = {get("cx", 0.5 * w, vw_), get("cy", 0.5 * h, vh_)};
+        g->radius = get("r", 0.5 * d, diag);
+        g->focal = {get("fx", g->center.x, vw_), get("fy", g->center.y, vh_)};
+        if (g->radius < 0) bad = "r: negative radius";
+    }
+    if (!bad.empty()) return r.error = bad, r;
+    // Stops from the first gradient of the chain that has any.
+    for (const pugi::xml_node& n : chain) {
+        for (const pugi::xml_node& s : n.children("stop")) {
+            GradientStop stop;
+            std::string off = s.attribute("offset").value();
+            const auto v = parse_length(off.empty() ? "0" : off, 1.0);
+            if (!v) return r.where = s, r.error = "offset: '" + off + "' is not a number", r;
+            stop.offset = float(std::clamp(*v, 0.0, 1.0));
+            if (!g->stops.empty()) stop.offset = std::max(stop.offset, g->stops.back().offset);
+            std::string color = style_value(s, "stop-color");
+            if (color.empty()) color = s.attribute("stop-color").as_string("black");
+            std::string opacity = style_value(s, "stop-opacity");
+            if (opacity.empty()) opacity = s.attribute("stop-opacity").as_string("1");
+            const auto c = parse_color(color);
+            const auto o = parse_length(opacity);
+            if (!c) return r.where = s, r.error = "stop-color: '" + color + "' is not a color", r;
+            if (!o)
+                return r.where = s, r.error = "stop-opacity: '" + opacity + "' is not a number", r;
+            stop.color = *c;
+            stop.color.a *= float(std::clamp(*o, 0.0, 1.0));
+            g->stops.push_back(stop);
+        }
+        if (!g->stops.empty()) break;
+    }
+    if (g->stops.empty())
+        r.warning = "gradient without stops: painted as none";
+    else
+        r.gradient = std::move(g);
+    return r;
+}
+
+} // namespace casteljau::svg_detail

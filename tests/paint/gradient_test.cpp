@@ -1,0 +1,166 @@
+// Gradients: the parameter t at known points against the SVG formulas, each
+// spread method, premultiplied and linear-light interpolation, and the SVG
+// side (units, gradientTransform, href inheritance, bad references).
+#include "casteljau/paint/gradient.h"
+#include "casteljau/render/renderer.h"
+#include "casteljau/svg/reader.h"
+#include "corpus.h"
+
+#include <gtest/gtest.h>
+
+namespace casteljau {
+namespace {
+
+Gradient two_stops(Gradient::Kind kind, Spread spread, Rgba a = {0, 0, 0, 1},
+                   Rgba b = {1, 1, 1, 1}) {
+    Gradient g;
+    g.kind = kind;
+    g.spread = spread;
+    g.stops = {{0, a}, {1, b}};
+    return g;
+}
+
+TEST(Gradient, LinearParameterAndSpreads) {
+    // p1 = (10, 0), p2 = (30, 0) in device space: t = (x - 10) / 20.
+    for (Spread s : {Spread::Pad, Spread::Reflect, Spread::Repeat}) {
+        Gradient g = two_stops(Gradient::Kind::Linear, s);
+        g.p1 = {10, 0}, g.p2 = {30, 0};
+        GradientShader sh;
+        ASSERT_TRUE(sh.prepare(g, Affine::identity(), 1));
+        EXPECT_NEAR(sh.parameter({20, 7}), 0.5, 1e-12);
+        const double before = sh.parameter({5, 0}),
+                     after = sh.parameter({35, 0}); // t = -0.25, 1.25
+        const double want_before = s == Spread::Pad ? 0.0 : s == Spread::Reflect ? 0.25 : 0.75;
+        const double want_after = s == Spread::Pad ? 1.0 : s == Spread::Reflect ? 0.75 : 0.25;
+        EXPECT_NEAR(before, want_before, 1e-12) << int(s);
+        EXPECT_NEAR(after, want_after, 1e-12) << int(s);
+    }
+}
+
+TEST(Gradient, RadialParameterIsTheFractionFromFocalToCircle) {
+    testing::Rng rng(91);
+    for (int i = 0; i < 200; ++i) {
+        Gradient g = two_stops(Gradient::Kind::Radial, Spread::Pad);
+        g.center = rng.point(100);
+        g.radius = rng.uniform(5, 50);
+        const double a = rng.uniform(0, 6.28), rf = rng.uniform(0, 0.9) * g.radius;
+        g.focal = g.center + Vec2{std::cos(a), std::sin(a)} * rf;
+        GradientShader sh;
+        ASSERT_TRUE(sh.prepare(g, Affine::identity(), 1));
+        const double b = rng.uniform(0, 6.28), lambda = rng.uniform(0, 1);
+        const Point on_circle = g.center + Vec2{std::cos(b), std::sin(b)} * g.radius;
+        EXPECT_NEAR(sh.parameter(lerp(g.focal, on_circle, lambda)), lambda, 1e-9) << i;
+        EXPECT_NEAR(sh.parameter(g.focal), 0.0, 1e-9) << i;
+    }
+}
+
+TEST(Gradient, FocalOutsideTheCircleIsMovedOntoIt) {
+    Gradient g = two_stops(Gradient::Kind::Radial, Spread::Pad);
+    g.center = {0, 0}, g.radius = 10, g.focal = {30, 0};
+    GradientShader sh;
+    ASSERT_TRUE(sh.prepare(g, Affine::identity(), 1));
+    for (Point p : {Point{0, 0}, Point{50, 50}, Point{-9, 2}, Point{10, 0}}) {
+        const double t = sh.parameter(p);
+        EXPECT_TRUE(t >= 0 && t <= 1) << p.x << "," << p.y << ": " << t;
+    }
+}
+
+TEST(Gradient, PremultipliedInterpolationDoesNotDarken) {
+    // Opaque red to transparent blue: half way, premultiplied, is red at 50%
+    // alpha; non-premultiplied interpolation would give purple.
+    Gradient g = two_stops(Gradient::Kind::Linear, Spread::Pad, {1, 0, 0, 1}, {0, 0, 1, 0});
+    g.p1 = {0, 0}, g.p2 = {1023, 0};
+    GradientShader sh;
+    ASSERT_TRUE(sh.prepare(g, Affine::identity(), 1));
+    const Premul mid = sh.at(511, 0);
+    EXPECT_NEAR(mid.a, 0.5f, 2e-3f);
+    EXPECT_NEAR(mid.r, mid.a, 1e-6f);
+    EXPECT_EQ(mid.b, 0.0f);
+}
+
+TEST(Gradient, LinearLightInterpolation) {
+    Gradient g = two_stops(Gradient::Kind::Linear, Spread::Pad);
+    g.p1 = {0, 0}, g.p2 = {1023, 0};
+    g.linear_light = true;
+    GradientShader sh;
+    ASSERT_TRUE(sh.prepare(g, Affine::identity(), 1));
+    // Half way in linear light is sRGB-encoded 0.7354 (not 0.5).
+    EXPECT_NEAR(sh.at(511, 0).r, 0.7354f, 3e-3f);
+}
+
+TEST(Gradient, SingularMapsAndNoStopsPaintNothing) {
+    Gradient g = two_stops(Gradient::Kind::Linear, Spread::Pad);
+    GradientShader sh;
+    EXPECT_FALSE(sh.prepare(g, Affine::scale(1, 0), 1));
+    g.stops.clear();
+    EXPECT_FALSE(sh.prepare(g, Affine::identity(), 1));
+}
+
+Canvas render(const std::string& svg, std::vector<std::string>* warnings = nullptr) {
+    const SvgResult doc = parse_svg(svg, "g.svg");
+    EXPECT_TRUE(doc.scene) << doc.error;
+    if (warnings) *warnings = doc.warnings;
+    Canvas c(int(doc.scene->width), int(doc.scene->height));
+    Renderer().render(*doc.scene, Affine::identity(), c, {});
+    return c;
+}
+
+TEST(SvgGradient, BoundingBoxAndUserSpaceUnits) {
+    // Black to white across a 100 px wide rect at x = 50: pixel x has t = (x + 0.5 - 50) / 100.
+    const std::string units[] = {R"svg(gradientUnits="objectBoundingBox")svg",
+                                 R"svg(gradientUnits="userSpaceOnUse" x1="50" x2="150")svg"};
+    for (const std::string& u : units) {
+        const Canvas c =
+            render(R"svg(<svg width="200" height="20"><linearGradient id="g" )svg" + u +
+                   R"svg(><stop offset="0" stop-color="black"/><stop offset="1" stop-color="white"/>
+            </linearGradient><rect x="50" width="100" height="20" fill="url(#g)"/></svg>)svg");
+        for (int x : {50, 75, 100, 149})
+            EXPECT_NEAR(c.row(10)[x].r, (float(x) + 0.5f - 50) / 100, 1.5e-3f) << u << " x " << x;
+    }
+}
+
+TEST(SvgGradient, TransformHrefInheritanceAndStops) {
+    std::vector<std::string> warnings;
+    const Canvas c =
+        render(R"svg(<svg xmlns:xlink="http://www.w3.org/1999/xlink" width="100" height="100">
+        <linearGradient id="stops"><stop offset="0" stop-color="black"/><stop offset="100%" style="stop-color:#fff"/></linearGradient>
+        <linearGradient id="t" xlink:href="#stops" gradientTransform="rotate(90 0.5 0.5)"/>
+        <rect width="100" height="100" fill="url(#t)"/></svg>)svg",
+               &warnings);
+    // Rotated by 90 degrees: the gradient runs downwards; inherited stops.
+    EXPECT_NEAR(c.row(10)[50].r, 0.105f, 2e-3f);
+    EXPECT_NEAR(c.row(90)[50].r, 0.905f, 2e-3f);
+    EXPECT_NEAR(c.row(90)[5].r, c.row(90)[95].r, 1e-6f);
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST(SvgGradient, BadReferencesFallBackWithAWarning) {
+    std::vector<std::string> warnings;
+    const Canvas c = render(R"svg(<svg width="30" height="10">
+        <linearGradient id="a" href="#b"><stop offset="0" stop-color="blue"/></linearGradient>
+        <linearGradient id="b" href="#a"/>
+        <rect width="10" height="10" fill="url(#missing) lime"/>
+        <rect x="10" width="10" height="10" fill="url(#b)"/>
+        <rect x="20" width="10" height="10" fill="url(#nope)"/></svg>)svg",
+                            &warnings);
+    EXPECT_EQ(c.row(5)[5].g, 1.0f);  // fallback color
+    EXPECT_EQ(c.row(5)[15].b, 1.0f); // the cycle is cut; b inherits a's stop
+    EXPECT_EQ(c.row(5)[25].a, 0.0f); // no gradient, no fallback: none
+    EXPECT_GE(warnings.size(), 2u);
+}
+
+TEST(SvgGradient, MalformedValuesAreErrorsWithTheirElement) {
+    const SvgResult r =
+        parse_svg(R"svg(<svg width="10" height="10"><linearGradient id="g" spreadMethod="wobble">
+        <stop offset="0"/></linearGradient><rect width="10" height="10" fill="url(#g)"/></svg>)svg",
+                  "m.svg");
+    EXPECT_NE(r.error.find("m.svg:1: <linearGradient>: spreadMethod: 'wobble'"), std::string::npos)
+        << r.error;
+    const SvgResult s = parse_svg(R"svg(<svg width="10" height="10"><linearGradient id="g">
+        <stop offset="x"/></linearGradient><rect width="10" height="10" fill="url(#g)"/></svg>)svg",
+                                  "s.svg");
+    EXPECT_NE(s.error.find("s.svg:2: <stop>: offset"), std::string::npos) << s.error;
+}
+
+} // namespace
+} // namespace casteljau
