@@ -1,6 +1,7 @@
 #include "casteljau/render/renderer.h"
 
 #include "casteljau/raster/path_edges.h"
+#include "casteljau/stroke/stroker.h"
 
 #include <algorithm>
 #include <chrono>
@@ -98,14 +99,11 @@ void Renderer::draw_group(const Group& g, Canvas& target, int depth) {
 }
 
 void Renderer::draw_shape(const Shape& s, Canvas& target) {
-    if (!s.fill || s.opacity <= 0.0f) return;
-    const Fill& f = *s.fill;
-    const float opacity = f.opacity * s.opacity;
-    const Premul color = premultiply(f.color, opacity);
-    if (!f.gradient && color.a <= 0.0f) return;
+    if (s.opacity <= 0.0f || (!s.fill && !s.stroke)) return;
+    const Affine m = view_ * s.transform;
     // A shape wholly above, below or right of the target draws nothing there
     // (left of it, it can still change the winding, see path_edges.h).
-    const Rect box = device_box(s.path.control_bounds(), view_ * s.transform);
+    const Rect box = device_box(s.path.control_bounds(), m).inflated(stroke_reach(s, m));
     if (box.is_empty() || box.y1 <= target.origin_y() ||
         box.y0 >= target.origin_y() + target.height() ||
         box.x0 >= target.origin_x() + target.width())
@@ -115,33 +113,83 @@ void Renderer::draw_shape(const Shape& s, Canvas& target) {
     // band gets the same edges as the whole frame.
     const PixelRect clip{target.origin_x(), frame_.y0, target.origin_x() + target.width(),
                          frame_.y1};
+    if (s.fill) {
+        auto t = Clock::now();
+        edges_.reset(clip, target.origin_y(), target.origin_y() + target.height());
+        RenderStats shape;
+        shape.flatten =
+            add_path_edges(s.path, m, options_->flatten, edges_, options_->measure_error);
+        stats_ += shape;
+        stats_.flatten_ms += ms_since(t);
+        paint(s, s.fill->color, s.fill->gradient.get(), s.fill->opacity * s.opacity, s.fill->rule,
+              target);
+    }
+    if (s.stroke) draw_stroke(s, m, clip, target);
+}
+
+void Renderer::draw_stroke(const Shape& s, const Affine& m, const PixelRect& clip, Canvas& target) {
+    const Stroke& st = *s.stroke;
+    // Hairlines: a stroke narrower than one device pixel is drawn one pixel
+    // wide with its opacity scaled by its width, so it keeps its total
+    // coverage without breaking up. The device width is taken as the width
+    // times the map's geometric-mean scale.
+    const double scale = std::sqrt(std::fabs(m.determinant()));
+    const double device_width = st.width * scale;
+    if (!(device_width > 0) || !(scale > 0)) return;
+    Stroke style = st;
+    float hairline = 1.0f;
+    if (device_width < 1.0) {
+        style.width = st.width / device_width;
+        hairline = float(device_width);
+    }
     auto t = Clock::now();
+    // The device tolerance in user units: divided by the largest stretch.
+    polygons_.clear();
+    stroke_outline(s.path, style, options_->flatten.tolerance / m.max_scale(), polygons_);
     edges_.reset(clip, target.origin_y(), target.origin_y() + target.height());
-    RenderStats shape;
-    shape.flatten = add_path_edges(s.path, view_ * s.transform, options_->flatten, edges_,
-                                   options_->measure_error);
-    stats_ += shape;
+    for (const Polygon& poly : polygons_) {
+        for (std::size_t i = 0; i < poly.size(); ++i)
+            edges_.add_line(m * poly[i], m * poly[(i + 1) % poly.size()]);
+        stats_.flatten.segments_out += poly.size();
+    }
     stats_.flatten_ms += ms_since(t);
-    t = Clock::now();
-    if (f.gradient) {
+    paint(s, st.color, st.gradient.get(), st.opacity * s.opacity * hairline, FillRule::NonZero,
+          target);
+}
+
+double Renderer::stroke_reach(const Shape& s, const Affine& m) {
+    if (!s.stroke) return 0;
+    // A miter reaches at most limit * width / 2 from the path; caps and round
+    // joins width / 2 (sqrt(2) of it for square caps). At least one pixel for
+    // hairlines.
+    const Stroke& st = *s.stroke;
+    return std::max(1.0, 0.5 * st.width * std::max(st.miter_limit, std::sqrt(2.0)) * m.max_scale());
+}
+
+void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float opacity,
+                     FillRule rule, Canvas& target) {
+    const auto t = Clock::now();
+    if (gradient) {
         // Gradient space -> device: the shape's transform, then for
         // objectBoundingBox units the unit square onto the shape's box (an
         // empty box paints nothing, SVG 1.1 13.2.2), then gradientTransform.
-        const Gradient& g = *f.gradient;
         Affine to_device = view_ * s.transform;
-        if (g.object_bounding_box) {
+        if (gradient->object_bounding_box) {
             const Rect b = s.path.bounds();
             if (!(b.width() > 0 && b.height() > 0)) return;
             to_device = to_device * Affine::translate(b.min().to_vec()) *
                         Affine::scale(b.width(), b.height());
         }
-        GradientShader& shader = gradient_shader_;
-        if (!shader.prepare(g, to_device * g.transform, opacity)) return;
-        GradientSpanPainter painter(target, shader);
-        raster_.fill(edges_, f.rule, options_->antialias, painter);
+        if (gradient_shader_.prepare(*gradient, to_device * gradient->transform, opacity)) {
+            GradientSpanPainter painter(target, gradient_shader_);
+            raster_.fill(edges_, rule, options_->antialias, painter);
+        }
     } else {
-        SolidSpanPainter painter(target, color);
-        raster_.fill(edges_, f.rule, options_->antialias, painter);
+        const Premul c = premultiply(color, opacity);
+        if (c.a > 0.0f) {
+            SolidSpanPainter painter(target, c);
+            raster_.fill(edges_, rule, options_->antialias, painter);
+        }
     }
     stats_.raster_ms += ms_since(t);
 }

@@ -12,6 +12,7 @@
 #include "casteljau/raster/edge.h"
 #include "casteljau/raster/rasterizer.h"
 #include "casteljau/scene/scene.h"
+#include "casteljau/stroke/stroker.h"
 
 #include <memory>
 #include <vector>
@@ -44,14 +45,22 @@ class Renderer {
     RenderStats render(const Scene& scene, const Affine& view, Canvas& canvas,
                        const RenderOptions& options, const PixelRect& frame);
 
+    // How far (device px) a shape's stroke can reach beyond its path.
+    static double stroke_reach(const Shape& s, const Affine& to_device);
+
   private:
     void draw_group(const Group& g, Canvas& target, int depth);
     void draw_shape(const Shape& s, Canvas& target);
+    void draw_stroke(const Shape& s, const Affine& m, const PixelRect& clip, Canvas& target);
+    // Composites the current edge list with a solid color or a gradient.
+    void paint(const Shape& s, Rgba color, const Gradient* gradient, float opacity, FillRule rule,
+               Canvas& target);
     Canvas& layer(int depth);
 
     EdgeList edges_;
     Rasterizer raster_;
     GradientShader gradient_shader_;              // its color table is reused across shapes
+    std::vector<Polygon> polygons_; // stroke outlines, reused across shapes
     std::vector<std::unique_ptr<Canvas>> layers_; // one per group nesting depth
     Affine view_;
     PixelRect frame_;

@@ -30,9 +30,9 @@ struct Fill {
 enum class LineJoin { Miter, Round, Bevel };
 enum class LineCap { Butt, Round, Square };
 
-// Parsed and carried now; drawn by the stroke stage.
 struct Stroke {
-    Rgba color;
+    Rgba color;                               // used when there is no gradient
+    std::shared_ptr<const Gradient> gradient; // shared by every shape that uses it
     float opacity = 1;
     double width = 1;
     LineJoin join = LineJoin::Miter;

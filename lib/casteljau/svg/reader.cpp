@@ -258,32 +258,30 @@ class Reader {
         s.transform = m;
         s.opacity = props.opacity;
         s.source_line = line_of(n.offset_debug());
-        s.fill = fill(n, style);
-        if (const auto c = resolve_paint(style.stroke, style); c && style.stroke_width > 0) {
-            s.stroke = Stroke{*c,
-                              style.stroke_opacity,
-                              style.stroke_width,
-                              style.stroke_join,
-                              style.stroke_cap,
-                              style.miter_limit,
-                              style.dashes,
-                              style.dash_offset};
-            warn_once(n, "strokes are parsed but not drawn yet");
-        }
+        if (const auto p = paint(n, style.fill, style))
+            s.fill = Fill{p->color, p->gradient, style.fill_opacity, style.fill_rule};
+        if (const auto p = paint(n, style.stroke, style); p && style.stroke_width > 0)
+            s.stroke = Stroke{p->color,           p->gradient,       style.stroke_opacity,
+                              style.stroke_width, style.stroke_join, style.stroke_cap,
+                              style.miter_limit,  style.dashes,      style.dash_offset};
         return s;
     }
 
-    // The fill paint: a color, or a gradient by url(#id) with its fallback
-    // color when the reference names no usable gradient (SVG 1.1, 11.2).
-    std::optional<Fill> fill(const pugi::xml_node& n, const StyleState& style) {
-        if (style.fill.from_url) {
-            const svg_detail::GradientRef g = gradients_->resolve(style.fill.url);
+    // A paint: a color, or a gradient by url(#id) with its fallback color
+    // when the reference names no usable gradient (SVG 1.1, 11.2).
+    struct ResolvedPaint {
+        Rgba color;
+        std::shared_ptr<const Gradient> gradient;
+    };
+    std::optional<ResolvedPaint> paint(const pugi::xml_node& n, const PaintSpec& spec,
+                                       const StyleState& style) {
+        if (spec.from_url) {
+            const svg_detail::GradientRef g = gradients_->resolve(spec.url);
             if (!g.error.empty()) fail(g.where, g.error);
             if (!g.warning.empty()) warn_once(g.where ? g.where : n, g.warning);
-            if (g.gradient) return Fill{{}, g.gradient, style.fill_opacity, style.fill_rule};
+            if (g.gradient) return ResolvedPaint{{}, g.gradient};
         }
-        if (const auto c = resolve_paint(style.fill, style))
-            return Fill{*c, nullptr, style.fill_opacity, style.fill_rule};
+        if (const auto c = resolve_paint(spec, style)) return ResolvedPaint{*c, nullptr};
         return std::nullopt;
     }
 

@@ -1,0 +1,302 @@
+#include "casteljau/stroke/stroker.h"
+
+#include "casteljau/flatten/flatten.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace casteljau {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+Vec2 unit(Vec2 v) {
+    const double l = v.length();
+    return l > 0 ? v / l : Vec2{};
+}
+
+struct Sample {
+    Point p;
+    Vec2 d;                   // unit tangent
+    bool cusp_before = false; // the normal flips just before this sample
+};
+
+bool degenerate(const Segment& s) {
+    return std::visit(
+        [](const auto& c) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(c)>, Conic>)
+                return c.p0 == c.p1 && c.p1 == c.p2;
+            else
+                return std::all_of(c.p.begin(), c.p.end(), [&](Point q) { return q == c.p[0]; });
+        },
+        s);
+}
+
+// Unit tangent at t, with the limit direction where the derivative vanishes.
+Vec2 tangent(const Segment& s, double t) {
+    if (t <= 0) return unit(segment_start_tangent(s));
+    if (t >= 1) return unit(segment_end_tangent(s));
+    const Vec2 d = segment_deriv(s, t);
+    if (d.length_sq() > 1e-24 * (1 + segment_start(s).to_vec().length_sq())) return unit(d);
+    return unit(segment_deriv(s, std::min(1.0, t + 1e-7)));
+}
+
+class Sampler {
+  public:
+    Sampler(double h, double tol) : tol_(tol) {
+        // (b): the normal may turn by dphi between samples; at least 4 per
+        // quarter turn keeps round joins and tiny widths sensible too.
+        const double c = std::clamp(1.0 - tol / (2.0 * h), -1.0, 1.0);
+        dphi_ = std::min(2.0 * std::acos(c), kPi / 8);
+    }
+    double dphi() const { return dphi_; }
+
+    // Samples of one segment, t = 0 first.
+    void run(const Segment& s, std::vector<Sample>& out) {
+        out.push_back({segment_start(s), tangent(s, 0.0)});
+        // (a): the adaptive flattener's parameters at tol / 2.
+        ts_.clear();
+        std::visit(
+            [&](const auto& c) {
+                flatten_curve(c, FlattenOptions{tol_ / 2, FlattenMethod::Adaptive, 0},
+                              [&](const FlatVertex& v) { ts_.push_back(v.t); });
+            },
+            s);
+        double ta = 0;
+        for (double tb : ts_) {
+            refine(s, ta, tb, out);
+            ta = tb;
+        }
+    }
+
+  private:
+    // (b) on [ta, tb], by bisection over a fixed stack (depth 16).
+    void refine(const Segment& s, double ta, double tb, std::vector<Sample>& out) {
+        struct Span {
+            double a, b;
+            int depth;
+        };
+        std::array<Span, 18> stack;
+        int top = 0;
+        stack[top++] = {ta, tb, 0};
+        Vec2 da = tangent(s, ta);
+        while (top > 0) {
+            const Span sp = stack[--top];
+            const Vec2 db = tangent(s, sp.b);
+            const double turn = std::atan2(std::fabs(da.cross(db)), da.dot(db));
+            const double chord = distance(segment_eval(s, sp.a), segment_eval(s, sp.b));
+            if (turn > dphi_ && chord > tol_ / 64 && sp.depth < 16) {
+                const double m = 0.5 * (sp.a + sp.b);
+                stack[top++] = {m, sp.b, sp.depth + 1};
+                stack[top++] = {sp.a, m, sp.depth + 1};
+                continue;
+            }
+            out.push_back({sp.b >= 1 ? segment_end(s) : segment_eval(s, sp.b), db, turn > dphi_});
+            da = db;
+        }
+    }
+
+    double tol_, dphi_;
+    std::vector<double> ts_;
+};
+
+// One side of the outline, or a cap or join, is built on a point list.
+class Outline {
+  public:
+    Outline(double h, double tol, double dphi, const Stroke& st)
+        : h_(h), tol_(tol), dphi_(dphi), st_(st) {}
+
+    // Arc of radius h around c from direction u0 to u1, turning `sweep` radians
+    // (signed), endpoints excluded.
+    void arc(std::vector<Point>& out, Point c, Vec2 u0, double sweep) const {
+        const int n = std::max(1, int(std::ceil(std::fabs(sweep) / dphi_)));
+        const double a0 = std::atan2(u0.y, u0.x);
+        for (int i = 1; i < n; ++i) {
+            const double a = a0 + sweep * i / n;
+            out.push_back(c + Vec2{std::cos(a), std::sin(a)} * h_);
+        }
+    }
+
+    // Join at p from tangent d0 to d1. `side` +1 builds the left side (p + h n), -1 the right.
+    void join(std::vector<Point>& out, Point p, Vec2 d0, Vec2 d1, int side, LineJoin how) const {
+        const Vec2 n0 = d0.perp() * double(side), n1 = d1.perp() * double(side);
+        const double turn = d0.cross(d1) * side; // > 0: this side is the inner one
+        if (std::fabs(d0.cross(d1)) < 1e-12 && d0.dot(d1) > 0) return; // straight on
+        if (turn > 0 && d0.dot(d1) > -1 + 1e-12) {
+            out.push_back(p); // inner side: through the joint (filled by nonzero)
+            return;
+        }
+        if (how == LineJoin::Round) {
+            const double sweep = std::atan2(n0.cross(n1), n0.dot(n1));
+            arc(out, p, n0, std::fabs(d0.cross(d1)) < 1e-12 ? kPi * (side > 0 ? -1 : 1) : sweep);
+        } else if (how == LineJoin::Miter) {
+            const double c = n0.dot(n1);
+            const double ratio =
+                1.0 / std::sqrt(std::max(1e-300, (1.0 + c) / 2.0)); // 1 / sin(theta / 2)
+            if (ratio <= st_.miter_limit) out.push_back(p + (n0 + n1) * (h_ / (1.0 + c)));
+        } // bevel: the straight edge to the next offset point
+    }
+
+    // Cap at the end point p with unit tangent d (pointing out of the stroke),
+    // from the left offset to the right offset.
+    void cap(std::vector<Point>& out, Point p, Vec2 d) const {
+        const Vec2 n = d.perp();
+        if (st_.cap == LineCap::Square) {
+            out.push_back(p + n * h_ + d * h_);
+            out.push_back(p - n * h_ + d * h_);
+        } else if (st_.cap == LineCap::Round) {
+            arc(out, p, n, -kPi);
+        }
+    }
+
+    void zero_length(std::vector<Polygon>& out, Point p) const {
+        if (st_.cap == LineCap::Round) {
+            Polygon disc{p + Vec2{h_, 0}};
+            arc(disc, p, {1, 0}, 2 * kPi);
+            out.push_back(std::move(disc));
+        } else if (st_.cap == LineCap::Square) {
+            out.push_back(
+                {p + Vec2{-h_, -h_}, p + Vec2{h_, -h_}, p + Vec2{h_, h_}, p + Vec2{-h_, h_}});
+        }
+    }
+
+    void subpath(const Subpath& sp, std::vector<Polygon>& out) {
+        std::vector<const Segment*> segs;
+        for (const Segment& s : sp.segments)
+            if (!degenerate(s)) segs.push_back(&s);
+        if (segs.empty()) return zero_length(out, sp.start);
+        Sampler sampler(h_, tol_);
+        std::vector<Point> left, right;
+        Vec2 first_d{}, last_d{};
+        Point last_p{};
+        for (std::size_t i = 0; i < segs.size(); ++i) {
+            samples_.clear();
+            sampler.run(*segs[i], samples_);
+            if (i == 0) {
+                first_d = samples_[0].d;
+            } else {
+                join(left, samples_[0].p, last_d, samples_[0].d, +1, st_.join);
+                join(right, samples_[0].p, last_d, samples_[0].d, -1, st_.join);
+            }
+            for (std::size_t k = 0; k < samples_.size(); ++k) {
+                const Sample& s = samples_[k];
+                if (s.cusp_before && k > 0) { // a cusp inside the curve: round it
+                    join(left, s.p, samples_[k - 1].d, s.d, +1, LineJoin::Round);
+                    join(right, s.p, samples_[k - 1].d, s.d, -1, LineJoin::Round);
+                }
+                left.push_back(s.p + s.d.perp() * h_);
+                right.push_back(s.p - s.d.perp() * h_);
+            }
+            last_d = samples_.back().d;
+            last_p = samples_.back().p;
+        }
+        if (sp.closed) {
+            join(left, last_p, last_d, first_d, +1, st_.join);
+            join(right, last_p, last_d, first_d, -1, st_.join);
+            out.push_back(std::move(left));
+            std::reverse(right.begin(), right.end());
+            out.push_back(std::move(right));
+            return;
+        }
+        cap(left, last_p, last_d);
+        left.insert(left.end(), right.rbegin(), right.rend());
+        cap(left, sp.start, -first_d);
+        out.push_back(std::move(left));
+    }
+
+  private:
+    double h_, tol_, dphi_;
+    const Stroke& st_;
+    std::vector<Sample> samples_;
+};
+
+Segment segment_subsegment(const Segment& s, double t0, double t1) {
+    return std::visit([&](const auto& c) -> Segment { return c.subsegment(t0, t1); }, s);
+}
+
+// Appends `s` from the path's current point (which it starts at, to rounding).
+void append(Path& p, const Segment& s) {
+    if (const auto* l = std::get_if<Line>(&s))
+        p.line_to(l->p[1]);
+    else if (const auto* q = std::get_if<QuadBez>(&s))
+        p.quad_to(q->p[1], q->p[2]);
+    else if (const auto* c = std::get_if<CubicBez>(&s))
+        p.cubic_to(c->p[1], c->p[2], c->p[3]);
+    else if (const auto* k = std::get_if<Conic>(&s))
+        p.conic_to(k->p1, k->p2, k->w);
+}
+
+// Dashes beyond this many per path are not drawn: a pattern far finer than a
+// pixel would otherwise cost unbounded time.
+constexpr std::size_t kMaxDashes = 1 << 20;
+
+// Splits the path into dashes (open subpaths) along its arc length.
+Path dashed(const Path& path, const Stroke& st, double tol) {
+    std::vector<double> pattern = st.dashes;
+    if (pattern.size() % 2) pattern.insert(pattern.end(), st.dashes.begin(), st.dashes.end());
+    double period = 0;
+    for (double d : pattern) period += d;
+    if (!(period > 0)) return path; // all zero: solid (SVG 1.1, 11.4)
+    Path out;
+    std::size_t dashes = 0;
+    for (const Subpath& sp : path.subpaths()) {
+        // Where in the pattern the subpath starts: dash_offset, wrapped (negative too).
+        double phase = std::fmod(st.dash_offset, period);
+        if (phase < 0) phase += period;
+        std::size_t k = 0;
+        while (phase >= pattern[k]) phase -= pattern[k], k = (k + 1) % pattern.size();
+        double remaining = pattern[k] - phase;
+        bool drawing = false; // a dash continues from the previous segment
+        const auto emit = [&](const Segment& seg, double ta, double tb) {
+            const Segment piece = segment_subsegment(seg, ta, tb);
+            if (!drawing) out.move_to(segment_start(piece)), ++dashes;
+            append(out, piece);
+        };
+        for (const Segment& seg : sp.segments) {
+            std::vector<FlatVertex> v{{segment_start(seg), 0.0}};
+            std::visit(
+                [&](const auto& c) {
+                    flatten_curve(c, FlattenOptions{tol * 1e-3, FlattenMethod::Adaptive, 0},
+                                  [&](const FlatVertex& x) { v.push_back(x); });
+                },
+                seg);
+            double t_from = 0;
+            for (std::size_t i = 1; i < v.size() && dashes < kMaxDashes; ++i) {
+                const double len = distance(v[i - 1].p, v[i].p);
+                double pos = 0;
+                while (len - pos > remaining &&
+                       dashes < kMaxDashes) { // the pattern changes in this chord
+                    pos += remaining;
+                    const double t = v[i - 1].t + (v[i].t - v[i - 1].t) * (pos / len);
+                    if (k % 2 == 0) emit(seg, t_from, t);
+                    drawing = false;
+                    t_from = t;
+                    k = (k + 1) % pattern.size();
+                    remaining = pattern[k];
+                }
+                remaining -= len - pos;
+            }
+            if (k % 2 == 0 && t_from < 1) {
+                emit(seg, t_from, 1.0);
+                drawing = true;
+            }
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+void stroke_outline(const Path& path, const Stroke& style, double tolerance,
+                    std::vector<Polygon>& out) {
+    const double h = style.width / 2;
+    if (!(h > 0) || !(tolerance > 0)) return;
+    const Path source = style.dashes.empty() ? path : dashed(path, style, tolerance);
+    Outline outline(h, tolerance, Sampler(h, tolerance).dphi(), style);
+    for (const Subpath& sp : source.subpaths()) outline.subpath(sp, out);
+}
+
+} // namespace casteljau

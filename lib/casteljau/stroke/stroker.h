@@ -1,0 +1,43 @@
+// Stroking: a path and a stroke style -> closed outlines whose nonzero fill is
+// the stroke (SVG 1.1, 11.4).
+//
+// Offsets. The outline's sides are the offset curves O(t) = P(t) +- h n(t),
+// h = width / 2, n the unit normal, sampled at parameters chosen so that, per
+// chord of the samples,
+//   (a) the base curve is within tol/2 of its chord (the adaptive flattener's
+//       exact test, flatness.h), and
+//   (b) the normal turns by at most dphi = 2 acos(1 - tol / (2h)),
+// whence the offset curve stays within tol/2 + h (1 - cos(dphi/2)) <= tol of
+// the offset chord: the offset of a point is the base point moved by h along
+// a direction that sweeps at most dphi, and a circular arc of angle dphi
+// leaves its chord by h (1 - cos(dphi/2)). Normals are exact at every sample:
+// the curve is never flattened first and offset after. Where the normal turns
+// fast over a vanishing length (a cusp), subdivision stops at a chord of
+// tol/64 and the offset sides are joined by a round arc there.
+//
+// Joins (between segments): on the outer side miter (falling back to bevel
+// when the miter ratio 1 / sin(theta/2) exceeds the limit), round (an arc of
+// radius h) or bevel; on the inner side the sides are connected through the
+// joint itself, which the nonzero rule fills correctly. Caps at the ends of
+// open subpaths: butt, round (half disc), square (extends h along the
+// tangent). A zero-length subpath draws a disc (round caps), an axis-aligned
+// square (square caps) or nothing (butt), as SVG 1.1 implementation notes say.
+// Dashes split each subpath at arc lengths measured on a 1e-3 * tol
+// flattening (its length error is below 1e-6 relative) before stroking.
+#pragma once
+
+#include "casteljau/curve/path.h"
+#include "casteljau/scene/scene.h"
+
+#include <vector>
+
+namespace casteljau {
+
+using Polygon = std::vector<Point>;
+
+// Appends the outline polygons of the stroke (in the path's own coordinates)
+// to `out`. `tolerance` (> 0) is in the same coordinates.
+void stroke_outline(const Path& path, const Stroke& style, double tolerance,
+                    std::vector<Polygon>& out);
+
+} // namespace casteljau

@@ -1,0 +1,209 @@
+// Stroke outlines against analytic shapes: the offset distance on random
+// curves, caps and joins, dashes along the arc length, zero-length subpaths,
+// and hairline coverage through the renderer.
+#include "casteljau/curve/path_data.h"
+#include "casteljau/flatten/error.h"
+#include "casteljau/render/renderer.h"
+#include "casteljau/stroke/stroker.h"
+#include "casteljau/svg/reader.h"
+#include "corpus.h"
+
+#include <gtest/gtest.h>
+#include <numbers>
+
+namespace casteljau {
+namespace {
+
+Stroke style(double width, LineCap cap = LineCap::Butt, LineJoin join = LineJoin::Miter) {
+    Stroke s;
+    s.width = width;
+    s.cap = cap;
+    s.join = join;
+    return s;
+}
+
+Path parse(const char* d) { return parse_path_data(d).path; }
+
+Rect bounds_of(const std::vector<Polygon>& polys) {
+    Rect r = Rect::empty();
+    for (const Polygon& p : polys)
+        for (Point q : p) r = r.united(q);
+    return r;
+}
+
+double area(const Polygon& p) { // signed, shoelace
+    double a = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        a += p[i].to_vec().cross(p[(i + 1) % p.size()].to_vec());
+    return a / 2;
+}
+
+// Distance from q to the cubic (dense sampling, then golden-section refinement).
+double distance_to_curve(const CubicBez& c, Point q) {
+    int best = 0;
+    double bd = 1e300;
+    for (int i = 0; i <= 400; ++i) {
+        const double d = distance(c.eval(i / 400.0), q);
+        if (d < bd) bd = d, best = i;
+    }
+    double lo = std::max(0, best - 1) / 400.0, hi = std::min(400, best + 1) / 400.0;
+    for (int it = 0; it < 60; ++it) {
+        const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
+        (distance(c.eval(a), q) < distance(c.eval(b), q) ? hi : lo) =
+            (distance(c.eval(a), q) < distance(c.eval(b), q) ? b : a);
+    }
+    return std::min(bd, distance(c.eval(0.5 * (lo + hi)), q));
+}
+
+TEST(Stroker, OutlineLiesAtHalfWidthFromRandomCurves) {
+    // Away from the caps, every outline vertex and every outline edge midpoint
+    // is at width/2 +- tolerance from the curve. Curves whose radius of
+    // curvature drops below the width fold their inner offset and are
+    // skipped (the fold lies inside the stroke, hidden by the nonzero fill).
+    testing::Rng rng(101);
+    int checked = 0;
+    for (int i = 0; i < 300; ++i) {
+        const CubicBez c = testing::random_cubic(rng, 300);
+        const double w = rng.uniform(2, 30), tol = rng.log_uniform(0.02, 0.5);
+        double min_radius = 1e300;
+        for (int k = 0; k <= 20000; ++k) {
+            const double t = k / 20000.0;
+            const Vec2 d1 = c.deriv(t), d2 = c.deriv2(t);
+            min_radius = std::min(min_radius, std::pow(d1.length(), 3) /
+                                                  std::max(1e-300, std::fabs(d1.cross(d2))));
+        }
+        // Also skipped: curves whose distant parts pass within 2w of each other
+        // (loops), where an offset point is nearer the other branch.
+        bool approaches = false;
+        for (int a = 0; a <= 200 && !approaches; ++a)
+            for (int b = a + 20; b <= 200 && !approaches; ++b)
+                approaches = distance(c.eval(a / 200.0), c.eval(b / 200.0)) < 2 * w;
+        if (min_radius < w || approaches) continue;
+        Path p;
+        p.move_to(c.start());
+        p.cubic_to(c.p[1], c.p[2], c.p[3]);
+        std::vector<Polygon> out;
+        stroke_outline(p, style(w), tol, out);
+        ASSERT_EQ(out.size(), 1u);
+        const Polygon& poly = out[0];
+        for (std::size_t k = 0; k < poly.size(); ++k) {
+            for (const Point q : {poly[k], midpoint(poly[k], poly[(k + 1) % poly.size()])}) {
+                if (distance(q, c.start()) < w || distance(q, c.end()) < w)
+                    continue; // near the caps
+                const double d = distance_to_curve(c, q);
+                EXPECT_NEAR(d, w / 2, tol + 1e-9)
+                    << "curve " << i << " width " << w << " tol " << tol;
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 5000);
+}
+
+TEST(Stroker, CapsExtendAsSpecified) {
+    const Path line = parse("M10 10 L90 10");
+    const double w = 8;
+    std::vector<Polygon> butt, square, round;
+    stroke_outline(line, style(w, LineCap::Butt), 0.01, butt);
+    stroke_outline(line, style(w, LineCap::Square), 0.01, square);
+    stroke_outline(line, style(w, LineCap::Round), 0.01, round);
+    EXPECT_NEAR(bounds_of(butt).x0, 10, 1e-12);
+    EXPECT_NEAR(bounds_of(square).x0, 10 - w / 2, 1e-12); // a square cap adds exactly w/2
+    EXPECT_NEAR(bounds_of(square).x1, 90 + w / 2, 1e-12);
+    EXPECT_NEAR(bounds_of(round).x1, 90 + w / 2, 0.01);
+    EXPECT_NEAR(std::fabs(area(butt[0])), 80 * w, 1e-9);
+    EXPECT_NEAR(std::fabs(area(square[0])), (80 + w) * w, 1e-9);
+    EXPECT_NEAR(std::fabs(area(round[0])), 80 * w + std::numbers::pi * w * w / 4, 0.2);
+}
+
+TEST(Stroker, MiterBeyondTheLimitBecomesABevel) {
+    // A V whose arms meet at 30 degrees: miter ratio 1 / sin(15 deg) = 3.864.
+    const double dx = 100 * std::tan(15 * std::numbers::pi / 180);
+    Path v;
+    v.move_to({50 - dx, 100});
+    v.line_to({50, 0});
+    v.line_to({50 + dx, 100});
+    std::vector<Polygon> miter, clipped, bevel;
+    Stroke s = style(10);
+    s.miter_limit = 3.9; // 3.864 <= 3.9: mitered
+    stroke_outline(v, s, 0.01, miter);
+    s.miter_limit = 3.8; // beyond: bevel
+    stroke_outline(v, s, 0.01, clipped);
+    stroke_outline(v, style(10, LineCap::Butt, LineJoin::Bevel), 0.01, bevel);
+    // The miter tip lies h / sin(15 deg) above the vertex.
+    EXPECT_NEAR(bounds_of(miter).y0, -5 / std::sin(15 * std::numbers::pi / 180), 1e-9);
+    EXPECT_NEAR(bounds_of(clipped).y0, bounds_of(bevel).y0, 1e-12);
+    EXPECT_GT(bounds_of(clipped).y0, bounds_of(miter).y0 + 10);
+}
+
+TEST(Stroker, DashesFollowThePatternAlongTheArcLength) {
+    // A quarter circle of radius 100 (arc length 50 pi = 157.08), dashes 10 on
+    // 5 off: the covered length is the pattern's duty over the arc.
+    const Path arc = parse("M100 0 A100 100 0 0 1 0 100");
+    Stroke s = style(2);
+    s.dashes = {10, 5};
+    std::vector<Polygon> out;
+    stroke_outline(arc, s, 0.001, out);
+    const double length = 50 * std::numbers::pi;
+    const double full = std::floor(length / 15), rest = std::min(10.0, length - 15 * full);
+    double covered = 0;
+    for (const Polygon& p : out) covered += std::fabs(area(p)) / 2; // width 2: area / width
+    EXPECT_NEAR(covered, full * 10 + rest, 0.01);
+    EXPECT_EQ(out.size(), std::size_t(full + (rest > 0 ? 1 : 0)));
+    // A negative offset: -5 wraps to 10, so the path starts with the 5-long
+    // gap and the first dash covers arc length [5, 15], starting at angle 5/100.
+    s.dash_offset = -5;
+    out.clear();
+    stroke_outline(arc, s, 0.001, out);
+    EXPECT_NEAR(std::fabs(area(out[0])) / 2, 10.0, 0.01);
+    const Point start = midpoint(out[0].front(), out[0].back()); // the butt cap's middle
+    EXPECT_NEAR(start.x, 100 * std::cos(0.05), 0.01);
+    EXPECT_NEAR(start.y, 100 * std::sin(0.05), 0.01);
+    // An odd count repeats: {10} is {10, 10}.
+    s.dashes = {10};
+    s.dash_offset = 0;
+    out.clear();
+    stroke_outline(arc, s, 0.001, out);
+    EXPECT_EQ(out.size(), std::size_t(std::ceil(length / 20)));
+    // All zero: solid.
+    s.dashes = {0, 0};
+    out.clear();
+    stroke_outline(arc, s, 0.001, out);
+    EXPECT_EQ(out.size(), 1u);
+}
+
+TEST(Stroker, ZeroLengthSubpaths) {
+    const Path dot = parse("M50 50 L50 50");
+    std::vector<Polygon> round, square, butt;
+    stroke_outline(dot, style(10, LineCap::Round), 0.01, round);
+    stroke_outline(dot, style(10, LineCap::Square), 0.01, square);
+    stroke_outline(dot, style(10, LineCap::Butt), 0.01, butt);
+    ASSERT_EQ(round.size(), 1u);
+    EXPECT_NEAR(std::fabs(area(round[0])), std::numbers::pi * 25, 0.2);
+    EXPECT_NEAR(std::fabs(area(square[0])), 100, 1e-12);
+    EXPECT_TRUE(butt.empty());
+}
+
+TEST(Stroker, HairlineCoverageMatchesWidthTimesLength) {
+    // 0.3 px wide strokes, horizontal and diagonal: the sum of coverage is
+    // width x length, and no pixel along the line is left empty.
+    for (const char* d : {"M10 20.3 L90 20.3", "M10 10 L70 70"}) {
+        const SvgResult doc =
+            parse_svg(std::string(R"svg(<svg width="100" height="100"><path d=")svg") + d +
+                          R"svg(" stroke="black" stroke-width="0.3"/></svg>)svg",
+                      "h.svg");
+        ASSERT_TRUE(doc.scene) << doc.error;
+        Canvas c(100, 100);
+        Renderer().render(*doc.scene, Affine::identity(), c, {});
+        double sum = 0;
+        for (int y = 0; y < 100; ++y)
+            for (int x = 0; x < 100; ++x) sum += c.row(y)[x].a;
+        const double length =
+            std::string(d).find("90") != std::string::npos ? 80 : 60 * std::sqrt(2.0);
+        // One-pixel-wide stroke at 0.3 opacity, plus the caps' share.
+        EXPECT_NEAR(sum, 0.3 * length, 0.3 * 1.5) << d;
+    }
+}
+
+} // namespace
+} // namespace casteljau
