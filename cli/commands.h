@@ -16,5 +16,6 @@ using Command = std::function<int()>;
 
 Command add_flatten_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
+Command add_compare_command(CLI::App& app);
 
 } // namespace casteljau::cli

@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     const Command flatten = add_flatten_command(app);
     const Command render = add_render_command(app);
+    const Command compare = add_compare_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -23,6 +24,7 @@ int main(int argc, char** argv) {
     try {
         if (app.got_subcommand("flatten")) return flatten();
         if (app.got_subcommand("render")) return render();
+        if (app.got_subcommand("compare")) return compare();
     } catch (const std::exception& e) {
         std::fprintf(stderr, "casteljau: %s\n", e.what());
         return kExitFailure;

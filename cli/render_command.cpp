@@ -45,6 +45,7 @@ struct RenderArgs {
     FlattenMethod method = FlattenMethod::Adaptive;
     int segments = 0;
     bool antialias = true;
+    bool linear_light = false;
     std::string background;
     int threads = 0;
     int repeat = 1;
@@ -95,7 +96,8 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
         out.status = kExitBadInput;
         return out;
     }
-    const RenderOptions options{{a.tolerance, a.method, a.segments}, a.antialias, false};
+    const RenderOptions options{
+        {a.tolerance, a.method, a.segments}, a.antialias, false, a.linear_light};
     std::vector<double> flatten_ms, raster_ms, frame_ms;
     RenderStats stats;
     for (int i = 0; i < a.repeat; ++i) {
@@ -223,6 +225,10 @@ Command add_render_command(CLI::App& app) {
     cmd->add_option("--antialias", a->antialias,
                     "on (exact-area coverage, default) or off (pixel centres)")
         ->transform(CLI::CheckedTransformer(onoff, CLI::ignore_case));
+    const std::map<std::string, bool> spaces{{"srgb", false}, {"linear", true}};
+    cmd->add_option("--gradient-interpolation", a->linear_light,
+                    "srgb (default, as SVG 1.1) or linear (linear light)")
+        ->transform(CLI::CheckedTransformer(spaces, CLI::ignore_case));
     cmd->add_option("--background", a->background, "Background color (default transparent)");
     cmd->add_option("--threads", a->threads,
                     "Threads rendering bands of rows (default: all cores); the output is the same")

@@ -66,5 +66,13 @@ expect output_is_folder 1 'folder' render "$data/ok.svg" -o "$tmp/isdir.png"
 expect output_unwritable 1 'cannot|No such' render "$data/ok.svg" -o "$tmp/no/such/dir/x.png"
 ls "$tmp" | grep -q '\.tmp-' && fail "temporary files left behind: $(ls "$tmp")" || pass
 
+# compare: images, heat map and a report with the table; bad input as for render.
+expect compare 0 '\| adaptive \| [0-9]+ \| 0\.[0-9]+' compare "$data/ok.svg" -o "$tmp/cmp" --segments 6
+for f in adaptive.png uniform_equal_error.png uniform_n.png heat_map.png report.md; do
+    [[ -s "$tmp/cmp/$f" ]] && pass || fail "compare: no $f"
+done
+grep -q 'uniform, equal error' "$tmp/cmp/report.md" && pass || fail "compare: report.md lacks the equal-error row"
+expect compare_bad 2 'nonnumber.svg:2' compare "$data/nonnumber.svg" -o "$tmp/cmp2"
+
 echo "$passes passed, $fails failed"
 [[ $fails -eq 0 ]]

@@ -87,6 +87,33 @@ TEST(Render, AliasedModeHasOnlyFullOrNoCoverage) {
         }
 }
 
+TEST(Render, ShapeOpacityAppliesToFillAndStrokeTogether) {
+    // Opaque red stroke over a blue fill, opacity 0.5 on the element: where the
+    // stroke covers the fill, only red at 0.5 shows (through a layer), not red
+    // over half-visible blue.
+    const Canvas c =
+        render(R"svg(<svg width="40" height="40"><rect x="10" y="10" width="20" height="20"
+        fill="blue" stroke="red" stroke-width="6" opacity="0.5"/></svg>)svg");
+    const Premul p = c.row(10)[20]; // on the stroke, over the fill's edge
+    EXPECT_NEAR(p.r, 0.5f, 1e-6f);
+    EXPECT_NEAR(p.b, 0.0f, 1e-6f);
+    EXPECT_NEAR(p.a, 0.5f, 1e-6f);
+    EXPECT_NEAR(c.row(20)[20].b, 0.5f, 1e-6f); // the fill alone inside
+}
+
+TEST(Render, NonUniformScalingStretchesTheStroke) {
+    // A horizontal and a vertical line of width 2 under scale(1, 3): the
+    // horizontal one becomes 6 px thick, the vertical one stays 2 px wide.
+    const Canvas c = render(R"svg(<svg width="60" height="60"><g transform="scale(1 3)">
+        <path d="M5 5 H55" stroke="black" stroke-width="2"/><path d="M30 8 V18" stroke="black" stroke-width="2"/>
+        </g></svg>)svg");
+    int thick = 0, wide = 0;
+    for (int y = 0; y < 60; ++y) thick += c.row(y)[10].a > 0.5f;
+    for (int x = 0; x < 60; ++x) wide += c.row(40)[x].a > 0.5f;
+    EXPECT_EQ(thick, 6);
+    EXPECT_EQ(wide, 2);
+}
+
 // Bands on several threads give the same bits as one thread: edges are
 // clipped to the frame, never to the band, on scenes with layers and with
 // shapes crossing band borders, for band counts that do not divide the height.

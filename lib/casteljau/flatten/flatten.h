@@ -3,6 +3,7 @@
 #pragma once
 
 #include "casteljau/flatten/adaptive.h"
+#include "casteljau/flatten/error.h"
 #include "casteljau/flatten/halving.h"
 #include "casteljau/flatten/uniform.h"
 
@@ -12,6 +13,10 @@ enum class FlattenMethod {
     Adaptive, // greedy flat prefixes (adaptive.h): the default
     Uniform,  // N segments in advance (uniform.h)
     Halving,  // textbook midpoint subdivision (halving.h): a baseline
+    // Uniform with, per curve, the smallest N whose measured error meets the
+    // tolerance (error.h): uniform sampling at its best, for comparisons at
+    // equal error. Slow: it measures several candidate N per curve.
+    UniformBest,
 };
 
 struct FlattenOptions {
@@ -36,6 +41,10 @@ void flatten_curve(const Curve& c, const FlattenOptions& o, Sink&& sink) {
         break;
     case FlattenMethod::Halving:
         flatten_halving(subdivision_form(c), o.tolerance, sink);
+        break;
+    case FlattenMethod::UniformBest:
+        flatten_uniform(c, best_uniform_segments(c, o.tolerance, wang_segments(c, o.tolerance)),
+                        sink);
         break;
     case FlattenMethod::Uniform:
         flatten_uniform(c, o.segments > 0 ? o.segments : wang_segments(c, o.tolerance), sink);

@@ -35,7 +35,9 @@ double spread(double t, Spread s) {
 
 } // namespace
 
-bool GradientShader::prepare(const Gradient& g, const Affine& to_device, float opacity) {
+bool GradientShader::prepare(const Gradient& g, const Affine& to_device, float opacity,
+                             bool linear_light) {
+    linear_light = linear_light || g.linear_light;
     if (g.stops.empty()) return false;
     const double det = to_device.determinant();
     if (!(std::fabs(det) > 1e-12) || !std::isfinite(det)) return false;
@@ -53,7 +55,7 @@ bool GradientShader::prepare(const Gradient& g, const Affine& to_device, float o
     // (premultiplied interpolation: a transparent stop does not darken).
     const auto premul_stop = [&](const GradientStop& s) {
         Rgba c = s.color;
-        if (g.linear_light) c = {to_linear(c.r), to_linear(c.g), to_linear(c.b), c.a};
+        if (linear_light) c = {to_linear(c.r), to_linear(c.g), to_linear(c.b), c.a};
         return premultiply(c, opacity);
     };
     std::size_t k = 0;
@@ -70,7 +72,7 @@ bool GradientShader::prepare(const Gradient& g, const Affine& to_device, float o
             const float span = b.offset - a.offset;
             c = lerp(premul_stop(a), premul_stop(b), span > 0 ? (t - a.offset) / span : 1.0f);
         }
-        if (g.linear_light && c.a > 0) { // back to sRGB encoding, premultiplied
+        if (linear_light && c.a > 0) { // back to sRGB encoding, premultiplied
             const float inv = 1.0f / c.a;
             c = {to_srgb(c.r * inv) * c.a, to_srgb(c.g * inv) * c.a, to_srgb(c.b * inv) * c.a, c.a};
         }

@@ -57,7 +57,9 @@ class GradientShader {
     // `to_device` maps gradient space to device pixels (user transform,
     // bounding box and gradientTransform composed). False when that map is
     // singular or the gradient has no stops: then nothing is painted.
-    bool prepare(const Gradient& g, const Affine& to_device, float opacity);
+    // `linear_light` asks for linear-light interpolation whatever the gradient says.
+    bool prepare(const Gradient& g, const Affine& to_device, float opacity,
+                 bool linear_light = false);
     // The premultiplied color at the centre of device pixel (x, y).
     Premul at(int x, int y) const;
     // The gradient parameter after spread, in [0, 1], at device point p.

@@ -71,35 +71,46 @@ Canvas& Renderer::layer(int depth) {
 void Renderer::draw_group(const Group& g, Canvas& target, int depth) {
     for (const Node& n : g.children) {
         if (const Shape* s = std::get_if<Shape>(&n.item)) {
-            draw_shape(*s, target);
+            // Opacity on a shape with both fill and stroke applies to the two
+            // together (SVG 1.1, 14.5): a layer, or the stroke would show the
+            // fill through it. With one paint, scaling its alpha is the same.
+            if (s->opacity < 1.0f && s->fill && s->stroke)
+                in_layer(n, target, depth, s->opacity, [&](Canvas& l) { draw_shape(*s, l, 1.0f); });
+            else
+                draw_shape(*s, target, s->opacity);
             continue;
         }
         const Group& child = std::get<Group>(n.item);
-        if (child.opacity >= 1.0f) {
+        if (child.opacity >= 1.0f)
             draw_group(child, target, depth);
-            continue;
-        }
-        if (child.opacity <= 0.0f) continue;
-        // The layer covers the group's bounds (one pixel of margin for
-        // antialiasing), clipped to the target.
-        const Rect b = node_bounds(n, view_);
-        if (b.is_empty()) continue;
-        const int x0 = std::max(target.origin_x(), int(std::floor(b.x0)) - 1);
-        const int y0 = std::max(target.origin_y(), int(std::floor(b.y0)) - 1);
-        const int x1 = std::min(target.origin_x() + target.width(), int(std::ceil(b.x1)) + 1);
-        const int y1 = std::min(target.origin_y() + target.height(), int(std::ceil(b.y1)) + 1);
-        if (x1 <= x0 || y1 <= y0) continue;
-        Canvas& l = layer(depth);
-        l.reset(x1 - x0, y1 - y0, x0, y0);
-        draw_group(child, l, depth + 1);
-        const auto t = Clock::now();
-        target.composite_layer(l, child.opacity);
-        stats_.raster_ms += ms_since(t);
+        else
+            in_layer(n, target, depth, child.opacity,
+                     [&](Canvas& l) { draw_group(child, l, depth + 1); });
     }
 }
 
-void Renderer::draw_shape(const Shape& s, Canvas& target) {
-    if (s.opacity <= 0.0f || (!s.fill && !s.stroke)) return;
+template <class Draw>
+void Renderer::in_layer(const Node& n, Canvas& target, int depth, float opacity, Draw draw) {
+    if (opacity <= 0.0f) return;
+    // The layer covers the node's bounds (one pixel of margin for
+    // antialiasing), clipped to the target.
+    const Rect b = node_bounds(n, view_);
+    if (b.is_empty()) return;
+    const int x0 = std::max(target.origin_x(), int(std::floor(b.x0)) - 1);
+    const int y0 = std::max(target.origin_y(), int(std::floor(b.y0)) - 1);
+    const int x1 = std::min(target.origin_x() + target.width(), int(std::ceil(b.x1)) + 1);
+    const int y1 = std::min(target.origin_y() + target.height(), int(std::ceil(b.y1)) + 1);
+    if (x1 <= x0 || y1 <= y0) return;
+    Canvas& l = layer(depth);
+    l.reset(x1 - x0, y1 - y0, x0, y0);
+    draw(l);
+    const auto t = Clock::now();
+    target.composite_layer(l, opacity);
+    stats_.raster_ms += ms_since(t);
+}
+
+void Renderer::draw_shape(const Shape& s, Canvas& target, float opacity) {
+    if (opacity <= 0.0f || (!s.fill && !s.stroke)) return;
     const Affine m = view_ * s.transform;
     // A shape wholly above, below or right of the target draws nothing there
     // (left of it, it can still change the winding, see path_edges.h).
@@ -121,13 +132,14 @@ void Renderer::draw_shape(const Shape& s, Canvas& target) {
             add_path_edges(s.path, m, options_->flatten, edges_, options_->measure_error);
         stats_ += shape;
         stats_.flatten_ms += ms_since(t);
-        paint(s, s.fill->color, s.fill->gradient.get(), s.fill->opacity * s.opacity, s.fill->rule,
+        paint(s, s.fill->color, s.fill->gradient.get(), s.fill->opacity * opacity, s.fill->rule,
               target);
     }
-    if (s.stroke) draw_stroke(s, m, clip, target);
+    if (s.stroke) draw_stroke(s, m, clip, target, opacity);
 }
 
-void Renderer::draw_stroke(const Shape& s, const Affine& m, const PixelRect& clip, Canvas& target) {
+void Renderer::draw_stroke(const Shape& s, const Affine& m, const PixelRect& clip, Canvas& target,
+                           float opacity) {
     const Stroke& st = *s.stroke;
     // Hairlines: a stroke narrower than one device pixel is drawn one pixel
     // wide with its opacity scaled by its width, so it keeps its total
@@ -153,7 +165,7 @@ void Renderer::draw_stroke(const Shape& s, const Affine& m, const PixelRect& cli
         stats_.flatten.segments_out += poly.size();
     }
     stats_.flatten_ms += ms_since(t);
-    paint(s, st.color, st.gradient.get(), st.opacity * s.opacity * hairline, FillRule::NonZero,
+    paint(s, st.color, st.gradient.get(), st.opacity * opacity * hairline, FillRule::NonZero,
           target);
 }
 
@@ -180,7 +192,8 @@ void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float
             to_device = to_device * Affine::translate(b.min().to_vec()) *
                         Affine::scale(b.width(), b.height());
         }
-        if (gradient_shader_.prepare(*gradient, to_device * gradient->transform, opacity)) {
+        if (gradient_shader_.prepare(*gradient, to_device * gradient->transform, opacity,
+                                     options_->linear_light_gradients)) {
             GradientSpanPainter painter(target, gradient_shader_);
             raster_.fill(edges_, rule, options_->antialias, painter);
         }

@@ -22,7 +22,8 @@ namespace casteljau {
 struct RenderOptions {
     FlattenOptions flatten;
     bool antialias = true;
-    bool measure_error = false; // fold the exact flattening error into the stats (slow)
+    bool measure_error = false;          // fold the exact flattening error into the stats (slow)
+    bool linear_light_gradients = false; // interpolate gradients in linear light, not sRGB
 };
 
 struct RenderStats {
@@ -50,8 +51,12 @@ class Renderer {
 
   private:
     void draw_group(const Group& g, Canvas& target, int depth);
-    void draw_shape(const Shape& s, Canvas& target);
-    void draw_stroke(const Shape& s, const Affine& m, const PixelRect& clip, Canvas& target);
+    void draw_shape(const Shape& s, Canvas& target, float opacity);
+    // Draws into an offscreen layer over the node's bounds, composited with `opacity`.
+    template <class Draw>
+    void in_layer(const Node& n, Canvas& target, int depth, float opacity, Draw draw);
+    void draw_stroke(const Shape& s, const Affine& m, const PixelRect& clip, Canvas& target,
+                     float opacity);
     // Composites the current edge list with a solid color or a gradient.
     void paint(const Shape& s, Rgba color, const Gradient* gradient, float opacity, FillRule rule,
                Canvas& target);
@@ -60,7 +65,7 @@ class Renderer {
     EdgeList edges_;
     Rasterizer raster_;
     GradientShader gradient_shader_;              // its color table is reused across shapes
-    std::vector<Polygon> polygons_; // stroke outlines, reused across shapes
+    std::vector<Polygon> polygons_;               // stroke outlines, reused across shapes
     std::vector<std::unique_ptr<Canvas>> layers_; // one per group nesting depth
     Affine view_;
     PixelRect frame_;
