@@ -5,6 +5,7 @@
 #   out/flatten-*.json      `casteljau flatten --json` on the example paths
 #   out/svg/*.png           the example SVG files rendered by `casteljau render`
 #   out/svg/stats.json      their render statistics (one JSON object per file)
+#   out/compare/            `casteljau compare` on the curves example: images, heat map, report.md
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -22,4 +23,6 @@ while read -r name data; do
 done < examples/paths.txt
 build/cli/casteljau render examples/svg/*.svg -o out/svg/ --scale 2 --stats out/svg/stats.json
 echo "rendered $(ls out/svg/*.png | wc -l) SVG examples into out/svg/"
+build/cli/casteljau compare examples/svg/curves.svg -o out/compare --segments 8 > /dev/null
+echo "adaptive vs uniform report: out/compare/report.md"
 echo "examples written to $(pwd)/out"
