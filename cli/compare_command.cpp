@@ -10,6 +10,7 @@
 #include "casteljau/render/renderer.h"
 #include "casteljau/svg/reader.h"
 #include "commands.h"
+#include "common.h"
 
 #include <algorithm>
 #include <chrono>
@@ -79,19 +80,11 @@ Canvas heat_map(const Canvas& a, const Canvas& b, double& max_diff, double& mean
 }
 
 int run_compare(const CompareArgs& a) {
-    if (!(a.tolerance >= 1e-4 && a.tolerance <= 1.0)) {
-        std::fprintf(stderr,
-                     "casteljau compare: --tolerance %g: must be in [0.0001, 1] device pixels\n",
-                     a.tolerance);
-        return kExitBadInput;
-    }
-    const SvgResult doc = read_svg_file(a.input);
-    for (const std::string& w : doc.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-    if (!doc.scene) {
-        std::fprintf(stderr, "error: %s\n", doc.error.c_str());
-        return doc.io_error ? kExitFailure : kExitBadInput;
-    }
-    if (doc.scene->width * doc.scene->height > double(1 << 24)) {
+    if (!check_tolerance("compare", a.tolerance)) return kExitBadInput;
+    int status = kExitOk;
+    const std::optional<Scene> scene = load_svg(a.input, status);
+    if (!scene) return status;
+    if (scene->width * scene->height > double(1 << 24)) {
         std::fprintf(stderr,
                      "error: %s: the document is larger than 16 Mpx, too large to compare\n",
                      a.input.c_str());
@@ -120,7 +113,7 @@ int run_compare(const CompareArgs& a) {
                      0,
                      {}});
     for (Variant& x : v) {
-        render_variant(*doc.scene, x);
+        render_variant(*scene, x);
         const std::string err =
             write_canvas_atomic((fs::path(a.output) / x.file).string(), x.canvas);
         if (!err.empty()) {

@@ -5,6 +5,7 @@
 #include "casteljau/curve/path_data.h"
 #include "casteljau/flatten/path_flatten.h"
 #include "commands.h"
+#include "common.h"
 #include "json.h"
 
 #include <chrono>
@@ -17,9 +18,6 @@ namespace casteljau::cli {
 
 namespace {
 
-// Tolerances below this are refused: they ask for segment counts no raster
-// can use (and, on large coordinates, below the doubles' own resolution).
-constexpr double kMinTolerance = 1e-4;
 constexpr int kMaxSegmentsOption = 1 << 20;
 // Timing repeats the flattening until this much time has passed, so short
 // paths are timed over many runs instead of one clock tick.
@@ -50,13 +48,7 @@ double time_per_curve_ns(const Path& path, const FlattenOptions& options) {
 }
 
 int run_flatten(const FlattenArgs& a) {
-    if (!(a.tolerance >= kMinTolerance && a.tolerance <= 1.0)) {
-        std::fprintf(stderr,
-                     "casteljau flatten: --tolerance %g: must be a number of device pixels in "
-                     "[%g, 1]\n",
-                     a.tolerance, kMinTolerance);
-        return kExitBadInput;
-    }
+    if (!check_tolerance("flatten", a.tolerance)) return kExitBadInput;
     const PathDataResult parsed = parse_path_data(a.path_data);
     if (parsed.error) {
         std::fprintf(stderr, "casteljau flatten: --path: at offset %zu: %s\n  %s\n  %*s^\n",

@@ -11,6 +11,7 @@
 #include "casteljau/svg/color.h"
 #include "casteljau/svg/reader.h"
 #include "commands.h"
+#include "common.h"
 #include "json.h"
 
 #include <algorithm>
@@ -73,14 +74,9 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
                    Premul background, BandRenderer& renderer, Canvas& canvas) {
     Outcome out;
     const auto t0 = Clock::now();
-    const SvgResult doc = read_svg_file(input);
-    for (const std::string& w : doc.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
-    if (!doc.scene) {
-        std::fprintf(stderr, "error: %s\n", doc.error.c_str());
-        out.status = doc.io_error ? kExitFailure : kExitBadInput;
-        return out;
-    }
-    const Scene& scene = *doc.scene;
+    const std::optional<Scene> loaded = load_svg(input, out.status);
+    if (!loaded) return out;
+    const Scene& scene = *loaded;
     const double parse_ms = ms(Clock::now() - t0);
     const double s = a.scale > 0    ? a.scale
                      : a.width > 0  ? a.width / scene.width
@@ -142,12 +138,7 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
 }
 
 int run_render(const RenderArgs& a) {
-    if (!(a.tolerance >= 1e-4 && a.tolerance <= 1.0)) {
-        std::fprintf(stderr,
-                     "casteljau render: --tolerance %g: must be in [0.0001, 1] device pixels\n",
-                     a.tolerance);
-        return kExitBadInput;
-    }
+    if (!check_tolerance("render", a.tolerance)) return kExitBadInput;
     Premul background{};
     if (!a.background.empty()) {
         const auto c = parse_color(a.background);

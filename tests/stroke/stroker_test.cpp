@@ -6,8 +6,10 @@
 #include "casteljau/render/renderer.h"
 #include "casteljau/stroke/stroker.h"
 #include "casteljau/svg/reader.h"
+#include "check.h"
 #include "corpus.h"
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <numbers>
 
@@ -182,6 +184,32 @@ TEST(Stroker, ZeroLengthSubpaths) {
     EXPECT_NEAR(std::fabs(area(round[0])), std::numbers::pi * 25, 0.2);
     EXPECT_NEAR(std::fabs(area(square[0])), 100, 1e-12);
     EXPECT_TRUE(butt.empty());
+}
+
+TEST(Stroker, DegenerateAndCoincidentSegments) {
+    // A zero-length segment in the middle changes nothing.
+    std::vector<Polygon> plain, with_dot;
+    stroke_outline(parse("M10 10 L90 10"), style(6), 0.01, plain);
+    stroke_outline(parse("M10 10 L50 10 L50 10 L90 10"), style(6), 0.01, with_dot);
+    EXPECT_EQ(bounds_of(plain), bounds_of(with_dot));
+    // Turning straight back (a 180-degree join): a round join makes the far
+    // end a half disc; a miter would be infinite and falls back to a bevel.
+    std::vector<Polygon> back_round, back_miter;
+    stroke_outline(parse("M10 10 L50 10 L20 10"), style(6, LineCap::Butt, LineJoin::Round), 0.01,
+                   back_round);
+    stroke_outline(parse("M10 10 L50 10 L20 10"), style(6, LineCap::Butt, LineJoin::Miter), 0.01,
+                   back_miter);
+    EXPECT_NEAR(bounds_of(back_round).x1, 53, 0.01);
+    EXPECT_NEAR(bounds_of(back_miter).x1, 50, 1e-9);
+    EXPECT_NEAR(bounds_of(back_round).y0, 7, 1e-9);
+    // A cusp inside a cubic (control points crossing): the outline stays
+    // finite and within width/2 of the curve's hull.
+    std::vector<Polygon> cusp;
+    stroke_outline(parse("M0 0 C 100 100 0 100 100 0"), style(4), 0.05, cusp);
+    const Rect b = bounds_of(cusp);
+    EXPECT_TRUE(std::isfinite(b.x0) && std::isfinite(b.y1));
+    EXPECT_GE(b.x0, -2 - 1e-9);
+    EXPECT_LE(b.y1, 75 + 2 + 1e-9);
 }
 
 TEST(Stroker, HairlineCoverageMatchesWidthTimesLength) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "casteljau/geom/point.h"
+#include "casteljau/geom/rect.h"
 
 #include <ostream>
 #include <span>
@@ -11,6 +12,9 @@
 namespace casteljau {
 // gtest prints points as coordinates instead of bytes.
 inline void PrintTo(const Point& p, std::ostream* os) { *os << "(" << p.x << ", " << p.y << ")"; }
+inline void PrintTo(const Rect& r, std::ostream* os) {
+    *os << "[" << r.x0 << ", " << r.y0 << " .. " << r.x1 << ", " << r.y1 << "]";
+}
 } // namespace casteljau
 
 namespace casteljau::testing {

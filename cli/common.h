@@ -1,0 +1,25 @@
+// Validation and loading shared by the subcommands, so that every command
+// reports the same things the same way.
+#pragma once
+
+#include "casteljau/scene/scene.h"
+
+#include <optional>
+#include <string>
+
+namespace casteljau::cli {
+
+// Tolerances are device pixels in [kMinTolerance, 1]: smaller ones ask for
+// segment counts no raster can use (and, on large coordinates, below the
+// doubles' own resolution); above one pixel is not what the product promises.
+inline constexpr double kMinTolerance = 1e-4;
+
+// True when valid; otherwise prints "casteljau COMMAND: --tolerance X: ..." and
+// returns false (the caller exits with status 2).
+bool check_tolerance(const char* command, double tolerance);
+
+// Reads an SVG file and prints its warnings. On failure prints the located
+// error, sets `status` (2 bad input, 1 unreadable file) and returns nothing.
+std::optional<Scene> load_svg(const std::string& path, int& status);
+
+} // namespace casteljau::cli
