@@ -160,11 +160,11 @@ int run_compare(const CompareArgs& a) {
             double(std::max<std::size_t>(1, v[0].stats.flatten.segments_out)),
         max_diff, mean_diff);
     md << line;
-    md << "The equal-error uniform variant finds its N per curve by measuring candidates, and its "
-          "flatten "
-          "time includes that search; the sampling itself costs about what the fixed-N row shows "
-          "per "
-          "segment (`build/bench/flatten_bench` times both at known N).\n\n";
+    md << "The equal-error uniform variant finds its N per curve by measuring candidates in the "
+          "first render and remembers it, so its best-of-"
+       << kRuns
+       << " time above is sampling at a "
+          "known N (plus one table lookup per curve).\n\n";
     md << "Images: `adaptive.png`, `uniform_equal_error.png`"
        << (a.segments > 0 ? ", `uniform_n.png`" : "") << ", `heat_map.png`.\n";
     const fs::path report = fs::path(a.output) / "report.md";

@@ -7,6 +7,10 @@
 #include "casteljau/flatten/halving.h"
 #include "casteljau/flatten/uniform.h"
 
+#include <array>
+#include <string>
+#include <unordered_map>
+
 namespace casteljau {
 
 enum class FlattenMethod {
@@ -15,7 +19,8 @@ enum class FlattenMethod {
     Halving,  // textbook midpoint subdivision (halving.h): a baseline
     // Uniform with, per curve, the smallest N whose measured error meets the
     // tolerance (error.h): uniform sampling at its best, for comparisons at
-    // equal error. Slow: it measures several candidate N per curve.
+    // equal error. The first time a curve is seen it measures candidate N;
+    // after that the N is remembered (memoized_best_uniform below).
     UniformBest,
 };
 
@@ -33,6 +38,32 @@ const Curve& subdivision_form(const Curve& c) {
 }
 inline HConic subdivision_form(const Conic& c) { return HConic::from(c); }
 
+// UniformBest's N per curve, memoized per thread (keyed by the curve's exact
+// control points and the tolerance), so that repeated renders for a
+// comparison time the sampling, not the search. A comparison tool: the memo
+// is dropped whole once it holds kUniformMemoSize curves.
+inline constexpr std::size_t kUniformMemoSize = 1 << 20;
+
+template <class Curve>
+int memoized_best_uniform(const Curve& c, double tolerance) {
+    thread_local std::unordered_map<std::string, int> memo;
+    std::string key(reinterpret_cast<const char*>(&tolerance), sizeof tolerance);
+    const auto add = [&key](const auto& points) {
+        key.append(reinterpret_cast<const char*>(points.data()), points.size() * sizeof(points[0]));
+    };
+    if constexpr (requires { c.hpoints(); })
+        add(c.hpoints()); // RationalBezier
+    else if constexpr (requires { c.points(); })
+        add(c.points()); // Bez<N>, Bezier
+    else if constexpr (requires { c.h; })
+        add(c.h); // HConic
+    else
+        add(std::array<double, 7>{c.p0.x, c.p0.y, c.p1.x, c.p1.y, c.p2.x, c.p2.y, c.w}); // Conic
+    if (const auto it = memo.find(key); it != memo.end()) return it->second;
+    if (memo.size() >= kUniformMemoSize) memo.clear();
+    return memo[key] = best_uniform_segments(c, tolerance, wang_segments(c, tolerance));
+}
+
 template <class Curve, class Sink>
 void flatten_curve(const Curve& c, const FlattenOptions& o, Sink&& sink) {
     switch (o.method) {
@@ -43,8 +74,7 @@ void flatten_curve(const Curve& c, const FlattenOptions& o, Sink&& sink) {
         flatten_halving(subdivision_form(c), o.tolerance, sink);
         break;
     case FlattenMethod::UniformBest:
-        flatten_uniform(c, best_uniform_segments(c, o.tolerance, wang_segments(c, o.tolerance)),
-                        sink);
+        flatten_uniform(c, memoized_best_uniform(c, o.tolerance), sink);
         break;
     case FlattenMethod::Uniform:
         flatten_uniform(c, o.segments > 0 ? o.segments : wang_segments(c, o.tolerance), sink);
