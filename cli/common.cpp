@@ -4,8 +4,29 @@
 #include "commands.h"
 
 #include <cstdio>
+#include <map>
 
 namespace casteljau::cli {
+
+void add_tolerance_option(CLI::App* cmd, double& tolerance) {
+    cmd->add_option("--tolerance", tolerance,
+                    "Flatness bound in device pixels, in [1e-4, 1] (default 0.25)");
+}
+
+void add_flatten_options(CLI::App* cmd, FlattenOptions& o) {
+    add_tolerance_option(cmd, o.tolerance);
+    const std::map<std::string, FlattenMethod> methods{{"adaptive", FlattenMethod::Adaptive},
+                                                       {"uniform", FlattenMethod::Uniform},
+                                                       {"halving", FlattenMethod::Halving}};
+    cmd->add_option("--flatten", o.method,
+                    "adaptive (default), uniform, or halving (textbook midpoint subdivision)")
+        ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
+    cmd->add_option(
+           "--segments", o.segments,
+           "Uniform only: segments per curve (default: the fewest that Wang's bound guarantees "
+           "meet the tolerance)")
+        ->check(CLI::Range(1, kMaxUniformSegments));
+}
 
 bool check_tolerance(const char* command, double tolerance) {
     if (tolerance >= kMinTolerance && tolerance <= 1.0) return true;

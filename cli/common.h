@@ -2,8 +2,10 @@
 // reports the same things the same way.
 #pragma once
 
+#include "casteljau/flatten/flatten.h"
 #include "casteljau/scene/scene.h"
 
+#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 
@@ -13,6 +15,11 @@ namespace casteljau::cli {
 // segment counts no raster can use (and, on large coordinates, below the
 // doubles' own resolution); above one pixel is not what the product promises.
 inline constexpr double kMinTolerance = 1e-4;
+
+// --tolerance, the same in every command.
+void add_tolerance_option(CLI::App* cmd, double& tolerance);
+// --tolerance, --flatten adaptive|uniform|halving and --segments N, into `o`.
+void add_flatten_options(CLI::App* cmd, FlattenOptions& o);
 
 // True when valid; otherwise prints "casteljau COMMAND: --tolerance X: ..." and
 // returns false (the caller exits with status 2).

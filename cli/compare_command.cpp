@@ -184,10 +184,10 @@ Command add_compare_command(CLI::App& app) {
         "compare", "Render with adaptive and uniform flattening side by side and report");
     cmd->add_option("input", a->input, "SVG file")->required()->check(CLI::ExistingFile);
     cmd->add_option("-o,--output", a->output, "Folder for the images and report.md")->required();
-    cmd->add_option("--tolerance", a->tolerance, "Flatness bound in device pixels (default 0.25)");
+    add_tolerance_option(cmd, a->tolerance);
     cmd->add_option("--segments", a->segments,
                     "Also render uniform sampling with N segments per curve")
-        ->check(CLI::Range(1, 1 << 20));
+        ->check(CLI::Range(1, kMaxUniformSegments));
     return [a] { return run_compare(*a); };
 }
 

@@ -18,16 +18,13 @@ namespace casteljau::cli {
 
 namespace {
 
-constexpr int kMaxSegmentsOption = 1 << 20;
 // Timing repeats the flattening until this much time has passed, so short
 // paths are timed over many runs instead of one clock tick.
 constexpr double kMinTimingSeconds = 0.02;
 
 struct FlattenArgs {
     std::string path_data;
-    double tolerance = 0.25;
-    FlattenMethod method = FlattenMethod::Adaptive;
-    int segments = 0;
+    FlattenOptions flatten;
     bool json = false;
 };
 
@@ -48,7 +45,7 @@ double time_per_curve_ns(const Path& path, const FlattenOptions& options) {
 }
 
 int run_flatten(const FlattenArgs& a) {
-    if (!check_tolerance("flatten", a.tolerance)) return kExitBadInput;
+    if (!check_tolerance("flatten", a.flatten.tolerance)) return kExitBadInput;
     const PathDataResult parsed = parse_path_data(a.path_data);
     if (parsed.error) {
         std::fprintf(stderr, "casteljau flatten: --path: at offset %zu: %s\n  %s\n  %*s^\n",
@@ -56,7 +53,7 @@ int run_flatten(const FlattenArgs& a) {
                      int(parsed.error->offset), "");
         return kExitBadInput;
     }
-    const FlattenOptions options{a.tolerance, a.method, a.segments};
+    const FlattenOptions& options = a.flatten;
     std::vector<Polyline> lines;
     const FlattenStats stats = flatten_path(parsed.path, Affine::identity(), options, lines, true);
     const double ns = time_per_curve_ns(parsed.path, options);
@@ -97,18 +94,7 @@ Command add_flatten_command(CLI::App& app) {
         "flatten", "Flatten SVG path data into line segments and measure the error");
     cmd->add_option("--path", args->path_data, "SVG path data, e.g. 'M0 0 C 50 100 150 -100 200 0'")
         ->required();
-    cmd->add_option("--tolerance", args->tolerance,
-                    "Flatness bound in device pixels, in [1e-4, 1] (default 0.25)");
-    const std::map<std::string, FlattenMethod> methods{{"adaptive", FlattenMethod::Adaptive},
-                                                       {"uniform", FlattenMethod::Uniform},
-                                                       {"halving", FlattenMethod::Halving}};
-    cmd->add_option("--flatten", args->method,
-                    "adaptive (default), uniform, or halving (textbook midpoint subdivision)")
-        ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
-    cmd->add_option("--segments", args->segments,
-                    "Uniform only: segments per curve (default: the fewest that Wang's bound "
-                    "guarantees meet the tolerance)")
-        ->check(CLI::Range(1, kMaxSegmentsOption));
+    add_flatten_options(cmd, args->flatten);
     cmd->add_flag("--json", args->json,
                   "Print {\"segments\", \"max_error_px\", \"ns_per_curve\", \"points\"} as JSON");
     return [args] { return run_flatten(*args); };

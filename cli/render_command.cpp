@@ -42,9 +42,7 @@ struct RenderArgs {
     std::vector<std::string> inputs;
     std::string output;
     double width = 0, height = 0, scale = 0;
-    double tolerance = 0.25;
-    FlattenMethod method = FlattenMethod::Adaptive;
-    int segments = 0;
+    FlattenOptions flatten;
     bool antialias = true;
     bool linear_light = false;
     std::string background;
@@ -92,8 +90,7 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
         out.status = kExitBadInput;
         return out;
     }
-    const RenderOptions options{
-        {a.tolerance, a.method, a.segments}, a.antialias, false, a.linear_light};
+    const RenderOptions options{a.flatten, a.antialias, false, a.linear_light};
     std::vector<double> flatten_ms, raster_ms, frame_ms;
     RenderStats stats;
     for (int i = 0; i < a.repeat; ++i) {
@@ -138,7 +135,7 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
 }
 
 int run_render(const RenderArgs& a) {
-    if (!check_tolerance("render", a.tolerance)) return kExitBadInput;
+    if (!check_tolerance("render", a.flatten.tolerance)) return kExitBadInput;
     Premul background{};
     if (!a.background.empty()) {
         const auto c = parse_color(a.background);
@@ -203,15 +200,7 @@ Command add_render_command(CLI::App& app) {
                   ->check(CLI::Range(1e-6, 1e6));
     w->excludes(h)->excludes(s);
     h->excludes(s);
-    cmd->add_option("--tolerance", a->tolerance,
-                    "Flatness bound in device pixels, in [1e-4, 1] (default 0.25)");
-    const std::map<std::string, FlattenMethod> methods{{"adaptive", FlattenMethod::Adaptive},
-                                                       {"uniform", FlattenMethod::Uniform},
-                                                       {"halving", FlattenMethod::Halving}};
-    cmd->add_option("--flatten", a->method, "adaptive (default), uniform, or halving")
-        ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
-    cmd->add_option("--segments", a->segments, "Uniform only: segments per curve")
-        ->check(CLI::Range(1, 1 << 20));
+    add_flatten_options(cmd, a->flatten);
     const std::map<std::string, bool> onoff{{"on", true}, {"off", false}};
     cmd->add_option("--antialias", a->antialias,
                     "on (exact-area coverage, default) or off (pixel centres)")

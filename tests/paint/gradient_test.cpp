@@ -3,6 +3,7 @@
 // side (units, gradientTransform, href inheritance, bad references).
 #include "casteljau/paint/gradient.h"
 #include "casteljau/render/renderer.h"
+#include "casteljau/svg/color.h"
 #include "casteljau/svg/reader.h"
 #include "corpus.h"
 
@@ -147,6 +148,27 @@ TEST(SvgGradient, BadReferencesFallBackWithAWarning) {
     EXPECT_EQ(c.row(5)[15].b, 1.0f); // the cycle is cut; b inherits a's stop
     EXPECT_EQ(c.row(5)[25].a, 0.0f); // no gradient, no fallback: none
     EXPECT_GE(warnings.size(), 2u);
+}
+
+// The shader keeps its color table for the gradient it last built: a second
+// scene through the same renderer must not be painted with the first one's.
+TEST(SvgGradient, OneRendererForSeveralScenesUsesEachScenesGradient) {
+    Renderer r;
+    for (const char* color : {"red", "blue", "lime"}) {
+        const SvgResult doc =
+            parse_svg(std::string(R"svg(<svg width="10" height="10"><linearGradient id="g">
+            <stop offset="0" stop-color=")svg") +
+                          color + R"svg("/></linearGradient>
+            <rect width="10" height="10" fill="url(#g)"/></svg>)svg",
+                      "s.svg");
+        ASSERT_TRUE(doc.scene) << doc.error;
+        Canvas c(10, 10);
+        r.render(*doc.scene, Affine::identity(), c, {});
+        const Rgba want = *parse_color(color);
+        EXPECT_EQ(c.row(5)[5].r, want.r) << color;
+        EXPECT_EQ(c.row(5)[5].g, want.g) << color;
+        EXPECT_EQ(c.row(5)[5].b, want.b) << color;
+    }
 }
 
 TEST(SvgGradient, MalformedValuesAreErrorsWithTheirElement) {

@@ -16,8 +16,8 @@
 namespace casteljau {
 namespace {
 
-Stroke style(double width, LineCap cap = LineCap::Butt, LineJoin join = LineJoin::Miter) {
-    Stroke s;
+StrokeGeometry style(double width, LineCap cap = LineCap::Butt, LineJoin join = LineJoin::Miter) {
+    StrokeGeometry s;
     s.width = width;
     s.cap = cap;
     s.join = join;
@@ -126,7 +126,7 @@ TEST(Stroker, MiterBeyondTheLimitBecomesABevel) {
     v.line_to({50, 0});
     v.line_to({50 + dx, 100});
     std::vector<Polygon> miter, clipped, bevel;
-    Stroke s = style(10);
+    StrokeGeometry s = style(10);
     s.miter_limit = 3.9; // 3.864 <= 3.9: mitered
     stroke_outline(v, s, 0.01, miter);
     s.miter_limit = 3.8; // beyond: bevel
@@ -142,7 +142,7 @@ TEST(Stroker, DashesFollowThePatternAlongTheArcLength) {
     // A quarter circle of radius 100 (arc length 50 pi = 157.08), dashes 10 on
     // 5 off: the covered length is the pattern's duty over the arc.
     const Path arc = parse("M100 0 A100 100 0 0 1 0 100");
-    Stroke s = style(2);
+    StrokeGeometry s = style(2);
     s.dashes = {10, 5};
     std::vector<Polygon> out;
     stroke_outline(arc, s, 0.001, out);

@@ -4,7 +4,6 @@
 #include "casteljau/svg/transform_list.h"
 #include "check.h"
 
-#include <chrono>
 #include <gtest/gtest.h>
 #include <numbers>
 
@@ -180,10 +179,11 @@ TEST(Reader, EntitiesAreNeverExpanded) {
         bomb += "<!ENTITY a" + std::to_string(i) + " \"" + std::string(10, '&') + "\">\n";
     bomb += "<!ENTITY ext SYSTEM \"file:///etc/passwd\">\n]>\n<svg width='10' "
             "height='10'><title>&a9;&ext;</title></svg>";
-    const auto t0 = std::chrono::steady_clock::now();
+    // Had the entities been expanded, the document would be 10^10 characters
+    // (or name /etc/passwd): it parses, and the title is not kept anyway.
     const SvgResult r = parse_svg(bomb, "bomb.svg");
-    EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(2));
-    EXPECT_TRUE(r.scene || !r.error.empty());
+    ASSERT_TRUE(r.scene) << r.error;
+    EXPECT_TRUE(r.scene->root.children.empty());
 }
 
 } // namespace

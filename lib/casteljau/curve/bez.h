@@ -95,6 +95,7 @@ struct Bez {
         for (int i = 0; i <= N; ++i) r.p[i] = m * p[i];
         return r;
     }
+    constexpr const std::array<Point, N + 1>& control_points() const { return p; }
     constexpr Rect control_bounds() const {
         Rect r = Rect::empty();
         for (Point q : p) r = r.united(q);

@@ -34,6 +34,8 @@ struct Conic {
     std::array<Conic, 2> split(double t) const;
     Conic subsegment(double t0, double t1) const;
     Conic transformed(const Affine& m) const { return {m * p0, m * p1, m * p2, w}; }
+    constexpr std::array<Point, 3> control_points() const { return {p0, p1, p2}; }
+    constexpr Rect control_bounds() const { return Rect::from_points(p0, p2).united(p1); }
     Rect bounds() const;
     RationalBezier to_rational() const;
 

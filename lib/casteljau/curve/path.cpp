@@ -4,25 +4,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace casteljau {
 
 namespace {
 
-template <int N>
-Vec2 bez_tangent(const Bez<N>& b, bool at_start) {
-    // The first nonzero control-polygon leg seen from the end: it is the
-    // direction of the first nonvanishing derivative there.
-    for (int k = 1; k <= N; ++k) {
-        const Vec2 v = at_start ? b.p[k] - b.p[0] : b.p[N] - b.p[N - k];
+// The first nonzero control-polygon leg seen from the end: it is the
+// direction of the first nonvanishing derivative there (for conics too: the
+// weights do not change the end tangents).
+Vec2 polygon_tangent(std::span<const Point> p, bool at_start) {
+    const std::size_t n = p.size() - 1;
+    for (std::size_t k = 1; k <= n; ++k) {
+        const Vec2 v = at_start ? p[k] - p[0] : p[n] - p[n - k];
         if (v.length_sq() > 0.0) return v;
     }
     return {};
-}
-
-Vec2 conic_tangent(const Conic& c, bool at_start) {
-    const Bez<2> q{{c.p0, c.p1, c.p2}}; // same control polygon, same end tangents
-    return bez_tangent(q, at_start);
 }
 
 template <class F>
@@ -50,18 +47,20 @@ Vec2 segment_deriv2(const Segment& s, double t) {
 Rect segment_bounds(const Segment& s) {
     return visit_curve(s, [](const auto& c) { return c.bounds(); });
 }
+Rect segment_control_bounds(const Segment& s) {
+    return visit_curve(s, [](const auto& c) { return c.control_bounds(); });
+}
+Segment segment_subsegment(const Segment& s, double t0, double t1) {
+    return visit_curve(s, [=](const auto& c) -> Segment { return c.subsegment(t0, t1); });
+}
 Segment segment_transformed(const Segment& s, const Affine& m) {
     return visit_curve(s, [&m](const auto& c) -> Segment { return c.transformed(m); });
 }
 
 namespace {
 Vec2 segment_tangent(const Segment& s, bool at_start) {
-    return visit_curve(s, [at_start](const auto& c) {
-        if constexpr (std::is_same_v<std::decay_t<decltype(c)>, Conic>)
-            return conic_tangent(c, at_start);
-        else
-            return bez_tangent(c, at_start);
-    });
+    return visit_curve(
+        s, [at_start](const auto& c) { return polygon_tangent(c.control_points(), at_start); });
 }
 } // namespace
 
@@ -94,7 +93,7 @@ Continuity joint_continuity(const Segment& a, const Segment& b, double tol) {
     const Vec2 ta = segment_end_tangent(a), tb = segment_start_tangent(b);
     if (ta.length_sq() == 0.0 || tb.length_sq() == 0.0) return Continuity::C0;
     // G1: same unit tangent (so also the same direction, not opposite).
-    if (!close(tb / tb.length() - ta / ta.length(), 1.0)) return Continuity::C0;
+    if (!close(tb.normalized() - ta.normalized(), 1.0)) return Continuity::C0;
     const Vec2 da = segment_deriv(a, 1.0), db = segment_deriv(b, 0.0);
     if (!close(db - da, da.length())) return Continuity::G1;
     const Vec2 dda = segment_deriv2(a, 1.0), ddb = segment_deriv2(b, 0.0);
@@ -102,17 +101,13 @@ Continuity joint_continuity(const Segment& a, const Segment& b, double tol) {
     return Continuity::C2;
 }
 
-Subpath& Path::open_subpath() {
+void Path::append(const Segment& s) {
     if (!open_) {
-        subpaths_.push_back({current_, {}, false});
+        subpaths_.push_back({segment_start(s), {}, false});
         open_ = true;
     }
-    return subpaths_.back();
-}
-
-void Path::append(Segment s, Point end) {
-    open_subpath().segments.push_back(s);
-    current_ = end;
+    subpaths_.back().segments.push_back(s);
+    current_ = segment_end(s);
 }
 
 void Path::move_to(Point p) {
@@ -125,19 +120,19 @@ void Path::move_to(Point p) {
 
 void Path::line_to(Point p) {
     const Point from = current_;
-    append(Line{{from, p}}, p);
+    append(Line{from, p});
 }
 void Path::quad_to(Point c, Point p) {
     const Point from = current_;
-    append(QuadBez{{from, c, p}}, p);
+    append(QuadBez{from, c, p});
 }
 void Path::cubic_to(Point c1, Point c2, Point p) {
     const Point from = current_;
-    append(CubicBez{{from, c1, c2, p}}, p);
+    append(CubicBez{from, c1, c2, p});
 }
 void Path::conic_to(Point c, Point p, double w) {
     const Point from = current_;
-    append(Conic{from, c, p, w}, p);
+    append(Conic{from, c, p, w});
 }
 
 void Path::arc_to(Vec2 radii, double x_rotation_deg, bool large_arc, bool sweep, Point p) {
@@ -147,7 +142,7 @@ void Path::arc_to(Vec2 radii, double x_rotation_deg, bool large_arc, bool sweep,
     if (arc.kind == EllipseArc::Kind::Line) return line_to(p);
     std::array<Conic, 4> pieces;
     const int n = svg_arc_to_conics(in, pieces);
-    for (int i = 0; i < n; ++i) append(pieces[i], pieces[i].end());
+    for (int i = 0; i < n; ++i) append(pieces[i]);
 }
 
 void Path::close() {
@@ -177,31 +172,17 @@ void Path::transform(const Affine& m) {
     current_ = m * current_;
 }
 
-Rect Path::bounds() const {
+Rect Path::united_bounds(Rect (*of)(const Segment&)) const {
     Rect r = Rect::empty();
     for (const Subpath& s : subpaths_) {
         r = r.united(s.start);
-        for (const Segment& seg : s.segments) r = r.united(segment_bounds(seg));
+        for (const Segment& seg : s.segments) r = r.united(of(seg));
     }
     return r;
 }
 
-Rect Path::control_bounds() const {
-    Rect r = Rect::empty();
-    for (const Subpath& s : subpaths_) {
-        r = r.united(s.start);
-        for (const Segment& seg : s.segments)
-            std::visit(
-                [&r](const auto& c) {
-                    if constexpr (std::is_same_v<std::decay_t<decltype(c)>, Conic>)
-                        r = r.united(c.p0).united(c.p1).united(c.p2);
-                    else
-                        for (Point p : c.p) r = r.united(p);
-                },
-                seg);
-    }
-    return r;
-}
+Rect Path::bounds() const { return united_bounds(segment_bounds); }
+Rect Path::control_bounds() const { return united_bounds(segment_control_bounds); }
 
 Point Path::eval(std::size_t subpath, double u) const {
     const Subpath& s = subpaths_[subpath];

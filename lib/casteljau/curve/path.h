@@ -35,6 +35,8 @@ Vec2 segment_deriv2(const Segment& s, double t);
 Vec2 segment_start_tangent(const Segment& s);
 Vec2 segment_end_tangent(const Segment& s);
 Rect segment_bounds(const Segment& s);
+Rect segment_control_bounds(const Segment& s); // holds the segment (convex hull property)
+Segment segment_subsegment(const Segment& s, double t0, double t1);
 Segment segment_transformed(const Segment& s, const Affine& m);
 
 struct Subpath {
@@ -64,6 +66,9 @@ class Path {
     // SVG elliptical arc from the current point (appendix F.6): exact conics.
     void arc_to(Vec2 radii, double x_rotation_deg, bool large_arc, bool sweep, Point p);
     void close();
+    // Appends a segment as it is. It should start at the current point; with
+    // no open subpath, one starts at the segment's start.
+    void append(const Segment& s);
 
     Point current_point() const { return current_; }
     const std::vector<Subpath>& subpaths() const { return subpaths_; }
@@ -83,9 +88,7 @@ class Path {
     std::vector<Continuity> continuity(std::size_t subpath, double tol = 1e-9) const;
 
   private:
-    Subpath& open_subpath();
-    void append(Segment s, Point end);
-
+    Rect united_bounds(Rect (*of)(const Segment&)) const;
     std::vector<Subpath> subpaths_;
     Point current_{};
     bool open_ = false; // the last subpath accepts segments

@@ -31,6 +31,11 @@ struct Vec2 {
     // sqrt of the sum of squares, not std::hypot: hypot guards against overflow
     // beyond 1e154, which finite geometry here never reaches, at ~10x the cost.
     double length() const { return std::sqrt(x * x + y * y); }
+    // The unit vector along *this; the zero vector stays zero.
+    Vec2 normalized() const {
+        const double l = length();
+        return l > 0 ? *this / l : Vec2{};
+    }
     // Left-hand perpendicular (rotated +90 degrees in a y-up frame).
     constexpr Vec2 perp() const { return {-y, x}; }
     bool is_finite() const { return std::isfinite(x) && std::isfinite(y); }

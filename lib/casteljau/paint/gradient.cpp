@@ -51,6 +51,17 @@ bool GradientShader::prepare(const Gradient& g, const Affine& to_device, float o
         const double limit = 0.999 * g.radius;
         if (e.length() > limit) focal_ = g.center + e * (limit / e.length());
     }
+    // The table depends on the stops, the opacity and the space only: a
+    // shader asked for the same ones again (the next band, or the next shape
+    // sharing the gradient) keeps its table.
+    if (g.stops != lut_stops_ || opacity != lut_opacity_ || linear_light != lut_linear_) {
+        build_table(g, opacity, linear_light);
+        lut_stops_ = g.stops, lut_opacity_ = opacity, lut_linear_ = linear_light;
+    }
+    return true;
+}
+
+void GradientShader::build_table(const Gradient& g, float opacity, bool linear_light) {
     // The table: stops interpolated in the chosen space, then premultiplied
     // (premultiplied interpolation: a transparent stop does not darken).
     const auto premul_stop = [&](const GradientStop& s) {
@@ -78,7 +89,6 @@ bool GradientShader::prepare(const Gradient& g, const Affine& to_device, float o
         }
         lut_[std::size_t(i)] = c;
     }
-    return true;
 }
 
 double GradientShader::parameter(Point p) const {

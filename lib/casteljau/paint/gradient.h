@@ -34,6 +34,7 @@ enum class Spread { Pad, Reflect, Repeat };
 struct GradientStop {
     float offset = 0; // in [0, 1], nondecreasing along the list
     Rgba color;       // alpha includes stop-opacity
+    constexpr bool operator==(const GradientStop&) const = default;
 };
 
 struct Gradient {
@@ -66,7 +67,14 @@ class GradientShader {
     double parameter(Point p) const;
 
   private:
+    void build_table(const Gradient& g, float opacity, bool linear_light);
+
     const Gradient* g_ = nullptr;
+    // What the table was built from: compared by value, so a table is never
+    // reused for a different gradient, whatever the gradients' lifetimes.
+    std::vector<GradientStop> lut_stops_;
+    float lut_opacity_ = -1;
+    bool lut_linear_ = false;
     Affine inverse_;
     Point focal_;
     std::array<Premul, kGradientLut> lut_{};

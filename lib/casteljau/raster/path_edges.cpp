@@ -9,12 +9,6 @@ namespace casteljau {
 
 namespace {
 
-Rect control_box(const Conic& c) { return Rect::from_points(c.p0, c.p2).united(c.p1); }
-template <int N>
-Rect control_box(const Bez<N>& c) {
-    return c.control_bounds();
-}
-
 struct EdgeEmitter {
     EdgeList& edges;
     const FlattenOptions& options;
@@ -53,7 +47,7 @@ struct EdgeEmitter {
         stack[top++] = {curve, 0};
         while (top > 0) {
             const Piece p = stack[--top];
-            const Rect box = control_box(p.c);
+            const Rect box = p.c.control_bounds();
             // Outside the clip, or outside the band of rows asked for. The
             // decisions below depend on the clip only, never on the band, so
             // a band gets exactly the edges the whole frame would.

@@ -146,18 +146,21 @@ void Renderer::draw_stroke(const Shape& s, const Affine& m, const PixelRect& cli
     // coverage without breaking up. The device width is taken as the width
     // times the map's geometric-mean scale.
     const double scale = std::sqrt(std::fabs(m.determinant()));
-    const double device_width = st.width * scale;
+    const double device_width = st.geometry.width * scale;
     if (!(device_width > 0) || !(scale > 0)) return;
-    Stroke style = st;
+    const StrokeGeometry* geometry = &st.geometry;
+    StrokeGeometry hairline_geometry; // copied only for hairlines
     float hairline = 1.0f;
     if (device_width < 1.0) {
-        style.width = st.width / device_width;
+        hairline_geometry = st.geometry;
+        hairline_geometry.width = st.geometry.width / device_width;
+        geometry = &hairline_geometry;
         hairline = float(device_width);
     }
     auto t = Clock::now();
     // The device tolerance in user units: divided by the largest stretch.
     polygons_.clear();
-    stroke_outline(s.path, style, options_->flatten.tolerance / m.max_scale(), polygons_);
+    stroke_outline(s.path, *geometry, options_->flatten.tolerance / m.max_scale(), polygons_);
     edges_.reset(clip, target.origin_y(), target.origin_y() + target.height());
     for (const Polygon& poly : polygons_) {
         for (std::size_t i = 0; i < poly.size(); ++i)
@@ -175,7 +178,8 @@ double Renderer::stroke_reach(const Shape& s, const Affine& m) {
     // joins width / 2 (sqrt(2) of it for square caps). At least one pixel for
     // hairlines.
     const Stroke& st = *s.stroke;
-    return std::max(1.0, 0.5 * st.width * std::max(st.miter_limit, std::sqrt(2.0)) * m.max_scale());
+    return std::max(1.0, 0.5 * st.geometry.width *
+                             std::max(st.geometry.miter_limit, std::sqrt(2.0)) * m.max_scale());
 }
 
 void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float opacity,

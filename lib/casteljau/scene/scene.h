@@ -30,16 +30,22 @@ struct Fill {
 enum class LineJoin { Miter, Round, Bevel };
 enum class LineCap { Butt, Round, Square };
 
-struct Stroke {
-    Rgba color;                               // used when there is no gradient
-    std::shared_ptr<const Gradient> gradient; // shared by every shape that uses it
-    float opacity = 1;
+// The shape of a stroke, its paint apart: all that the stroker needs, and
+// what the SVG style cascade computes (initial values of SVG 1.1, 11.4).
+struct StrokeGeometry {
     double width = 1;
     LineJoin join = LineJoin::Miter;
     LineCap cap = LineCap::Butt;
     double miter_limit = 4;
     std::vector<double> dashes;
     double dash_offset = 0;
+};
+
+struct Stroke {
+    Rgba color;                               // used when there is no gradient
+    std::shared_ptr<const Gradient> gradient; // shared by every shape that uses it
+    float opacity = 1;
+    StrokeGeometry geometry;
 };
 
 struct Shape {

@@ -13,46 +13,37 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-Vec2 unit(Vec2 v) {
-    const double l = v.length();
-    return l > 0 ? v / l : Vec2{};
-}
-
 struct Sample {
     Point p;
     Vec2 d;                   // unit tangent
     bool cusp_before = false; // the normal flips just before this sample
 };
 
+// All control points coincide: the segment is a point.
 bool degenerate(const Segment& s) {
-    return std::visit(
-        [](const auto& c) {
-            if constexpr (std::is_same_v<std::decay_t<decltype(c)>, Conic>)
-                return c.p0 == c.p1 && c.p1 == c.p2;
-            else
-                return std::all_of(c.p.begin(), c.p.end(), [&](Point q) { return q == c.p[0]; });
-        },
-        s);
+    const Rect b = segment_control_bounds(s);
+    return b.width() == 0 && b.height() == 0;
 }
 
 // Unit tangent at t, with the limit direction where the derivative vanishes.
 Vec2 tangent(const Segment& s, double t) {
-    if (t <= 0) return unit(segment_start_tangent(s));
-    if (t >= 1) return unit(segment_end_tangent(s));
+    if (t <= 0) return segment_start_tangent(s).normalized();
+    if (t >= 1) return segment_end_tangent(s).normalized();
     const Vec2 d = segment_deriv(s, t);
-    if (d.length_sq() > 1e-24 * (1 + segment_start(s).to_vec().length_sq())) return unit(d);
-    return unit(segment_deriv(s, std::min(1.0, t + 1e-7)));
+    if (d.length_sq() > 1e-24 * (1 + segment_start(s).to_vec().length_sq())) return d.normalized();
+    return segment_deriv(s, std::min(1.0, t + 1e-7)).normalized();
+}
+
+// (b): the normal may turn by dphi between samples; at least 4 samples per
+// quarter turn keep round joins and tiny widths sensible too.
+double max_normal_turn(double h, double tol) {
+    const double c = std::clamp(1.0 - tol / (2.0 * h), -1.0, 1.0);
+    return std::min(2.0 * std::acos(c), kPi / 8);
 }
 
 class Sampler {
   public:
-    Sampler(double h, double tol) : tol_(tol) {
-        // (b): the normal may turn by dphi between samples; at least 4 per
-        // quarter turn keeps round joins and tiny widths sensible too.
-        const double c = std::clamp(1.0 - tol / (2.0 * h), -1.0, 1.0);
-        dphi_ = std::min(2.0 * std::acos(c), kPi / 8);
-    }
-    double dphi() const { return dphi_; }
+    Sampler(double h, double tol) : tol_(tol), dphi_(max_normal_turn(h, tol)) {}
 
     // Samples of one segment, t = 0 first.
     void run(const Segment& s, std::vector<Sample>& out) {
@@ -106,8 +97,8 @@ class Sampler {
 // One side of the outline, or a cap or join, is built on a point list.
 class Outline {
   public:
-    Outline(double h, double tol, double dphi, const Stroke& st)
-        : h_(h), tol_(tol), dphi_(dphi), st_(st) {}
+    Outline(double h, double tol, const StrokeGeometry& st)
+        : h_(h), dphi_(max_normal_turn(h, tol)), st_(st), sampler_(h, tol) {}
 
     // Arc of radius h around c from direction u0 to u1, turning `sweep` radians
     // (signed), endpoints excluded.
@@ -168,13 +159,12 @@ class Outline {
         for (const Segment& s : sp.segments)
             if (!degenerate(s)) segs.push_back(&s);
         if (segs.empty()) return zero_length(out, sp.start);
-        Sampler sampler(h_, tol_);
         std::vector<Point> left, right;
         Vec2 first_d{}, last_d{};
         Point last_p{};
         for (std::size_t i = 0; i < segs.size(); ++i) {
             samples_.clear();
-            sampler.run(*segs[i], samples_);
+            sampler_.run(*segs[i], samples_);
             if (i == 0) {
                 first_d = samples_[0].d;
             } else {
@@ -208,33 +198,18 @@ class Outline {
     }
 
   private:
-    double h_, tol_, dphi_;
-    const Stroke& st_;
+    double h_, dphi_;
+    const StrokeGeometry& st_;
+    Sampler sampler_; // one per stroke: its buffers serve every segment
     std::vector<Sample> samples_;
 };
-
-Segment segment_subsegment(const Segment& s, double t0, double t1) {
-    return std::visit([&](const auto& c) -> Segment { return c.subsegment(t0, t1); }, s);
-}
-
-// Appends `s` from the path's current point (which it starts at, to rounding).
-void append(Path& p, const Segment& s) {
-    if (const auto* l = std::get_if<Line>(&s))
-        p.line_to(l->p[1]);
-    else if (const auto* q = std::get_if<QuadBez>(&s))
-        p.quad_to(q->p[1], q->p[2]);
-    else if (const auto* c = std::get_if<CubicBez>(&s))
-        p.cubic_to(c->p[1], c->p[2], c->p[3]);
-    else if (const auto* k = std::get_if<Conic>(&s))
-        p.conic_to(k->p1, k->p2, k->w);
-}
 
 // Dashes beyond this many per path are not drawn: a pattern far finer than a
 // pixel would otherwise cost unbounded time.
 constexpr std::size_t kMaxDashes = 1 << 20;
 
 // Splits the path into dashes (open subpaths) along its arc length.
-Path dashed(const Path& path, const Stroke& st, double tol) {
+Path dashed(const Path& path, const StrokeGeometry& st, double tol) {
     std::vector<double> pattern = st.dashes;
     if (pattern.size() % 2) pattern.insert(pattern.end(), st.dashes.begin(), st.dashes.end());
     double period = 0;
@@ -253,7 +228,7 @@ Path dashed(const Path& path, const Stroke& st, double tol) {
         const auto emit = [&](const Segment& seg, double ta, double tb) {
             const Segment piece = segment_subsegment(seg, ta, tb);
             if (!drawing) out.move_to(segment_start(piece)), ++dashes;
-            append(out, piece);
+            out.append(piece);
         };
         for (const Segment& seg : sp.segments) {
             std::vector<FlatVertex> v{{segment_start(seg), 0.0}};
@@ -290,12 +265,12 @@ Path dashed(const Path& path, const Stroke& st, double tol) {
 
 } // namespace
 
-void stroke_outline(const Path& path, const Stroke& style, double tolerance,
+void stroke_outline(const Path& path, const StrokeGeometry& style, double tolerance,
                     std::vector<Polygon>& out) {
     const double h = style.width / 2;
     if (!(h > 0) || !(tolerance > 0)) return;
     const Path source = style.dashes.empty() ? path : dashed(path, style, tolerance);
-    Outline outline(h, tolerance, Sampler(h, tolerance).dphi(), style);
+    Outline outline(h, tolerance, style);
     for (const Subpath& sp : source.subpaths()) outline.subpath(sp, out);
 }
 

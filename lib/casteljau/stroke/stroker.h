@@ -37,7 +37,7 @@ using Polygon = std::vector<Point>;
 
 // Appends the outline polygons of the stroke (in the path's own coordinates)
 // to `out`. `tolerance` (> 0) is in the same coordinates.
-void stroke_outline(const Path& path, const Stroke& style, double tolerance,
+void stroke_outline(const Path& path, const StrokeGeometry& style, double tolerance,
                     std::vector<Polygon>& out);
 
 } // namespace casteljau

@@ -260,10 +260,8 @@ class Reader {
         s.source_line = line_of(n.offset_debug());
         if (const auto p = paint(n, style.fill, style))
             s.fill = Fill{p->color, p->gradient, style.fill_opacity, style.fill_rule};
-        if (const auto p = paint(n, style.stroke, style); p && style.stroke_width > 0)
-            s.stroke = Stroke{p->color,           p->gradient,       style.stroke_opacity,
-                              style.stroke_width, style.stroke_join, style.stroke_cap,
-                              style.miter_limit,  style.dashes,      style.dash_offset};
+        if (const auto p = paint(n, style.stroke, style); p && style.stroke_geometry.width > 0)
+            s.stroke = Stroke{p->color, p->gradient, style.stroke_opacity, style.stroke_geometry};
         return s;
     }
 

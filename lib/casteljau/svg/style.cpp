@@ -6,6 +6,8 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <initializer_list>
+#include <utility>
 
 namespace casteljau {
 
@@ -89,6 +91,20 @@ std::string bad(std::string_view name, std::string_view value, const char* expec
     return "property " + std::string(name) + ": '" + std::string(value) + "' is not " + expected;
 }
 
+// The enumerator a keyword names, if it is one of `words`.
+template <class E>
+std::optional<E> lookup(std::string_view value,
+                        std::initializer_list<std::pair<std::string_view, E>> words) {
+    for (const auto& [word, e] : words)
+        if (value == word) return e;
+    return std::nullopt;
+}
+
+// A length no smaller than `min`.
+std::optional<double> at_least(std::optional<double> v, double min) {
+    return v && *v >= min ? v : std::nullopt;
+}
+
 } // namespace
 
 std::optional<double> parse_length(std::string_view text, double percent_of) {
@@ -138,92 +154,52 @@ std::string apply_property(std::string_view name, std::string_view value, const 
                            StyleState& s, ElementProps& props) {
     value = trim(value);
     const bool inherit = value == "inherit";
-    const auto paint = [&](PaintSpec& target, const PaintSpec& from) -> std::string {
+    // Every property the same way: `inherit` takes the parent's value, a
+    // value that parses is taken, anything else is an error.
+    const auto set = [&](auto& target, const auto& from, const auto& parsed,
+                         const char* expected) -> std::string {
         if (inherit) return target = from, "";
-        const auto p = parse_paint(value);
-        if (!p) return bad(name, value, "a paint (none, a color, currentColor or url(#id))");
-        target = *p;
+        if (!parsed) return bad(name, value, expected);
+        target = *parsed;
         return "";
     };
-    const auto opacity = [&](float& target, float from) -> std::string {
-        if (inherit) return target = from, "";
-        const auto o = parse_opacity(value);
-        if (!o) return bad(name, value, "an opacity");
-        target = *o;
-        return "";
-    };
-    if (name == "fill") return paint(s.fill, parent.fill);
-    if (name == "stroke") return paint(s.stroke, parent.stroke);
-    if (name == "fill-opacity") return opacity(s.fill_opacity, parent.fill_opacity);
-    if (name == "stroke-opacity") return opacity(s.stroke_opacity, parent.stroke_opacity);
-    if (name == "opacity") return opacity(props.opacity, 1.0f);
-    if (name == "fill-rule") {
-        if (inherit)
-            s.fill_rule = parent.fill_rule;
-        else if (value == "nonzero")
-            s.fill_rule = FillRule::NonZero;
-        else if (value == "evenodd")
-            s.fill_rule = FillRule::EvenOdd;
-        else
-            return bad(name, value, "nonzero or evenodd");
-        return "";
-    }
-    if (name == "color") {
-        if (inherit) return s.color = parent.color, "";
-        const auto c = parse_color(value);
-        if (!c) return bad(name, value, "a color");
-        s.color = *c;
-        return "";
-    }
-    if (name == "stroke-width" || name == "stroke-miterlimit" || name == "stroke-dashoffset") {
-        double& target = name == "stroke-width"        ? s.stroke_width
-                         : name == "stroke-miterlimit" ? s.miter_limit
-                                                       : s.dash_offset;
-        const double from = name == "stroke-width"        ? parent.stroke_width
-                            : name == "stroke-miterlimit" ? parent.miter_limit
-                                                          : parent.dash_offset;
-        if (inherit) return target = from, "";
-        const auto v = parse_length(value);
-        if (!v || (name != "stroke-dashoffset" && *v < 0) ||
-            (name == "stroke-miterlimit" && *v < 1))
-            return bad(name, value,
-                       name == "stroke-miterlimit" ? "a number >= 1" : "a valid length");
-        target = *v;
-        return "";
-    }
-    if (name == "stroke-dasharray") {
-        if (inherit) return s.dashes = parent.dashes, "";
-        const auto d = parse_dashes(value);
-        if (!d) return bad(name, value, "a list of non-negative lengths");
-        s.dashes = *d;
-        return "";
-    }
-    if (name == "stroke-linejoin") {
-        if (inherit)
-            s.stroke_join = parent.stroke_join;
-        else if (value == "miter")
-            s.stroke_join = LineJoin::Miter;
-        else if (value == "round")
-            s.stroke_join = LineJoin::Round;
-        else if (value == "bevel")
-            s.stroke_join = LineJoin::Bevel;
-        else
-            return bad(name, value, "miter, round or bevel");
-        return "";
-    }
-    if (name == "stroke-linecap") {
-        if (inherit)
-            s.stroke_cap = parent.stroke_cap;
-        else if (value == "butt")
-            s.stroke_cap = LineCap::Butt;
-        else if (value == "round")
-            s.stroke_cap = LineCap::Round;
-        else if (value == "square")
-            s.stroke_cap = LineCap::Square;
-        else
-            return bad(name, value, "butt, round or square");
-        return "";
-    }
+    constexpr const char* kPaint = "a paint (none, a color, currentColor or url(#id))";
+    StrokeGeometry& g = s.stroke_geometry;
+    const StrokeGeometry& pg = parent.stroke_geometry;
+    if (name == "fill") return set(s.fill, parent.fill, parse_paint(value), kPaint);
+    if (name == "stroke") return set(s.stroke, parent.stroke, parse_paint(value), kPaint);
+    if (name == "fill-opacity")
+        return set(s.fill_opacity, parent.fill_opacity, parse_opacity(value), "an opacity");
+    if (name == "stroke-opacity")
+        return set(s.stroke_opacity, parent.stroke_opacity, parse_opacity(value), "an opacity");
+    if (name == "opacity") return set(props.opacity, 1.0f, parse_opacity(value), "an opacity");
+    if (name == "color") return set(s.color, parent.color, parse_color(value), "a color");
+    if (name == "fill-rule")
+        return set(s.fill_rule, parent.fill_rule,
+                   lookup<FillRule>(
+                       value, {{"nonzero", FillRule::NonZero}, {"evenodd", FillRule::EvenOdd}}),
+                   "nonzero or evenodd");
+    if (name == "stroke-width")
+        return set(g.width, pg.width, at_least(parse_length(value), 0), "a non-negative length");
+    if (name == "stroke-miterlimit")
+        return set(g.miter_limit, pg.miter_limit, at_least(parse_length(value), 1),
+                   "a number >= 1");
+    if (name == "stroke-dashoffset")
+        return set(g.dash_offset, pg.dash_offset, parse_length(value), "a length");
+    if (name == "stroke-dasharray")
+        return set(g.dashes, pg.dashes, parse_dashes(value), "a list of non-negative lengths");
+    if (name == "stroke-linejoin")
+        return set(g.join, pg.join,
+                   lookup<LineJoin>(value, {{"miter", LineJoin::Miter},
+                                            {"round", LineJoin::Round},
+                                            {"bevel", LineJoin::Bevel}}),
+                   "miter, round or bevel");
+    if (name == "stroke-linecap")
+        return set(g.cap, pg.cap,
+                   lookup<LineCap>(value, {{"butt", LineCap::Butt},
+                                           {"round", LineCap::Round},
+                                           {"square", LineCap::Square}}),
+                   "butt, round or square");
     if (name == "display") {
         props.display_none = value == "none";
         return "";

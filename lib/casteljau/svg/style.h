@@ -33,12 +33,7 @@ struct StyleState {
     FillRule fill_rule = FillRule::NonZero;
     PaintSpec stroke;
     float stroke_opacity = 1;
-    double stroke_width = 1;
-    LineJoin stroke_join = LineJoin::Miter;
-    LineCap stroke_cap = LineCap::Butt;
-    double miter_limit = 4;
-    std::vector<double> dashes;
-    double dash_offset = 0;
+    StrokeGeometry stroke_geometry;
     Rgba color{0, 0, 0, 1};
     bool visible = true;
 };
