@@ -3,6 +3,7 @@
 #pragma once
 
 #include "casteljau/geom/point.h"
+#include "casteljau/geom/point3.h"
 #include "casteljau/geom/rect.h"
 
 #include <ostream>
@@ -12,6 +13,11 @@
 namespace casteljau {
 // gtest prints points as coordinates instead of bytes.
 inline void PrintTo(const Point& p, std::ostream* os) { *os << "(" << p.x << ", " << p.y << ")"; }
+inline std::ostream& operator<<(std::ostream& os, const Point3& p) {
+    return os << "(" << p.x << ", " << p.y << ", " << p.z << ")";
+}
+inline void PrintTo(const Point3& p, std::ostream* os) { *os << p; }
+inline void PrintTo(const Vec3& v, std::ostream* os) { *os << Point3{} + v; }
 inline void PrintTo(const Rect& r, std::ostream* os) {
     *os << "[" << r.x0 << ", " << r.y0 << " .. " << r.x1 << ", " << r.y1 << "]";
 }

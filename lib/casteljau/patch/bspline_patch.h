@@ -1,0 +1,66 @@
+// BSplinePatch: one 4x4 piece of a uniform bicubic B-spline surface.
+//
+// Matrix form x = S M G M^T T with M = kBSplineMatrix (basis_matrix.h), S in v
+// and T in u, G the 4x4 grid c[r][k] (rows along v). The piece is a bicubic
+// Bezier patch whose control points are, row by row and then column by
+// column, the images of four B-spline points under
+//   P0 = (b0 + 4 b1 + b2) / 6,   P1 = (4 b1 + 2 b2) / 6,
+//   P2 = (2 b1 + 4 b2) / 6,      P3 = (b1 + 4 b2 + b3) / 6
+// (Boehm's conversion; Farin 5th ed., 7.5): to_bezier(). Evaluation by nested
+// de Casteljau goes through that conversion; eval_matrix() does not. Neither
+// the surface nor its corners interpolate the control points.
+#pragma once
+
+#include "casteljau/patch/bezier_patch.h"
+
+#include <array>
+
+namespace casteljau {
+
+struct BSplinePatch {
+    std::array<std::array<PatchPoint, 4>, 4> c{};
+
+    constexpr PatchPoint eval_matrix(double u, double v) const {
+        const auto wu = basis_weights(kBSplineMatrix, u);
+        const auto wv = basis_weights(kBSplineMatrix, v);
+        AffineSum sum;
+        for (int r = 0; r < 4; ++r)
+            for (int k = 0; k < 4; ++k) sum.add(wv[r] * wu[k], c[r][k]);
+        return sum.point();
+    }
+
+    constexpr CubicPatch to_bezier() const {
+        constexpr double w[4][4] = {{1 / 6.0, 4 / 6.0, 1 / 6.0, 0},
+                                    {0, 4 / 6.0, 2 / 6.0, 0},
+                                    {0, 2 / 6.0, 4 / 6.0, 0},
+                                    {0, 1 / 6.0, 4 / 6.0, 1 / 6.0}};
+        std::array<std::array<PatchPoint, 4>, 4> rows{};
+        for (int r = 0; r < 4; ++r)
+            for (int i = 0; i < 4; ++i) {
+                AffineSum s;
+                for (int k = 0; k < 4; ++k) s.add(w[i][k], c[r][k]);
+                rows[r][i] = s.point();
+            }
+        CubicPatch out;
+        for (int i = 0; i < 4; ++i)
+            for (int k = 0; k < 4; ++k) {
+                AffineSum s;
+                for (int r = 0; r < 4; ++r) s.add(w[i][r], rows[r][k]);
+                out.c[i][k] = s.point();
+            }
+        return out;
+    }
+
+    constexpr PatchPoint eval(double u, double v) const { return to_bezier().eval(u, v); }
+    constexpr PatchDerivatives derivatives(double u, double v) const {
+        return to_bezier().derivatives(u, v);
+    }
+    constexpr Box3 control_bounds() const {
+        Box3 b;
+        for (const auto& row : c)
+            for (const PatchPoint& q : row) b.add(q.p);
+        return b;
+    }
+};
+
+} // namespace casteljau

@@ -1,0 +1,64 @@
+// GridVertices: the mesh vertex at the grid point (i / nu, j / nv) of one
+// patch, computed once. Points on the patch boundary come from the shared
+// edge (assembler.h), so a neighbour asking for the same point gets the same
+// vertex; interior points are evaluated on the patch. Normals come from
+// patch_normal (finite at poles), texture coordinates from the patch itself.
+#pragma once
+
+#include "casteljau/patch/normal.h"
+#include "casteljau/tessellate/assembler.h"
+
+#include <cstdint>
+#include <unordered_map>
+
+namespace casteljau {
+
+// Sides of the (u, v) square, counter-clockwise: v = 0, u = 1, v = 1, u = 0.
+enum Side : int { kBottom = 0, kRight = 1, kTop = 2, kLeft = 3 };
+
+template <class Patch>
+class GridVertices {
+  public:
+    static constexpr int M = Patch::kDegreeU, N = Patch::kDegreeV;
+
+    GridVertices(MeshAssembler& a, const Patch& patch, std::uint32_t patch_index)
+        : a_(a), patch_(patch), index_(patch_index) {
+        const auto right = patch.column(M), left = patch.column(0);
+        edges_[kBottom] = a.edge(patch.c[0]);
+        edges_[kRight] = a.edge(right);
+        edges_[kTop] = a.edge(patch.c[N]);
+        edges_[kLeft] = a.edge(left);
+    }
+
+    EdgeRef edge(Side s) const { return edges_[s]; }
+    std::uint32_t patch_index() const { return index_; }
+
+    std::uint32_t at(std::uint32_t i, std::uint32_t nu, std::uint32_t j, std::uint32_t nv) {
+        const std::uint64_t key = (std::uint64_t(i) << 32) | j;
+        const auto [it, inserted] = cache_.try_emplace(key, 0);
+        if (!inserted) return it->second;
+        const double u = double(i) / double(nu), v = double(j) / double(nv);
+        Point3 p;
+        if (j == 0) p = a_.edge_point(edges_[kBottom], i, nu);
+        else if (j == nv) p = a_.edge_point(edges_[kTop], i, nu);
+        else if (i == 0) p = a_.edge_point(edges_[kLeft], j, nv);
+        else if (i == nu) p = a_.edge_point(edges_[kRight], j, nv);
+        else p = patch_.eval(u, v).p;
+        return it->second = a_.vertex(p, patch_normal(patch_, u, v), patch_.eval(u, v).st);
+    }
+
+    // A vertex of the patch's interior that no other piece shares.
+    std::uint32_t interior(double u, double v) {
+        const PatchPoint q = patch_.eval(u, v);
+        return a_.vertex(q.p, patch_normal(patch_, u, v), q.st);
+    }
+
+  private:
+    MeshAssembler& a_;
+    const Patch& patch_;
+    std::uint32_t index_;
+    EdgeRef edges_[4];
+    std::unordered_map<std::uint64_t, std::uint32_t> cache_;
+};
+
+} // namespace casteljau
