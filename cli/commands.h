@@ -17,5 +17,6 @@ using Command = std::function<int()>;
 Command add_flatten_command(CLI::App& app);
 Command add_render_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
+Command add_patch_command(CLI::App& app);
 
 } // namespace casteljau::cli

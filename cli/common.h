@@ -16,6 +16,11 @@ namespace casteljau::cli {
 // doubles' own resolution); above one pixel is not what the product promises.
 inline constexpr double kMinTolerance = 1e-4;
 
+// Output image limits: each side at most 16384 px, and at most 2^26 pixels in
+// all (64 Mpx: a 1 GiB float canvas), checked before anything is allocated.
+inline constexpr int kMaxSide = 16384;
+inline constexpr double kMaxPixels = double(1 << 26);
+
 // --tolerance, the same in every command.
 void add_tolerance_option(CLI::App* cmd, double& tolerance);
 // --tolerance, --flatten adaptive|uniform|halving and --segments N, into `o`.

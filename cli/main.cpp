@@ -6,11 +6,12 @@
 
 int main(int argc, char** argv) {
     using namespace casteljau::cli;
-    CLI::App app{"casteljau: exact, adaptive de Casteljau flattening and rendering of curves"};
+    CLI::App app{"casteljau: exact, adaptive de Casteljau flattening and rendering of curves and patches"};
     app.require_subcommand(1);
     const Command flatten = add_flatten_command(app);
     const Command render = add_render_command(app);
     const Command compare = add_compare_command(app);
+    const Command patch = add_patch_command(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("flatten")) return flatten();
         if (app.got_subcommand("render")) return render();
         if (app.got_subcommand("compare")) return compare();
+        if (app.got_subcommand("patch")) return patch();
     } catch (const std::exception& e) {
         std::fprintf(stderr, "casteljau: %s\n", e.what());
         return kExitFailure;

@@ -32,10 +32,6 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-// Output limits: each side at most 16384 px, and at most 2^26 pixels in all
-// (64 Mpx: a 1 GiB float canvas), checked before anything is allocated.
-constexpr int kMaxSide = 16384;
-constexpr double kMaxPixels = double(1 << 26);
 constexpr int kMaxRepeat = 100000;
 
 struct RenderArgs {

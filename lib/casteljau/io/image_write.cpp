@@ -1,10 +1,12 @@
 #include "casteljau/io/image_write.h"
 
+#include "casteljau/io/atomic_file.h"
+
 #include <OpenImageIO/imageio.h>
 #include <filesystem>
 #include <memory>
 #include <system_error>
-#include <unistd.h>
+#include <utility>
 
 namespace casteljau {
 
@@ -24,13 +26,7 @@ std::string write_image_atomic(const std::string& path, const ImageView& image) 
     std::error_code ec;
     if (fs::is_directory(dest, ec)) return path + ": is a folder, not a file";
     const std::string ext = dest.extension().string();
-    // Same folder (rename is atomic only within a file system), same extension.
-    // Built by appending: GCC 12 warns falsely (-Wrestrict, PR 105329) on the
-    // equivalent chain of operator+ with a leading literal.
-    std::string name(".");
-    name.append(dest.stem().string()).append(".tmp-").append(std::to_string(::getpid()));
-    name.append(ext);
-    const fs::path tmp = dest.parent_path() / name;
+    const fs::path tmp = temporary_sibling(dest);
     auto out = OIIO::ImageOutput::create(tmp.string());
     if (!out) return path + ": no image writer for '" + ext + "' (" + OIIO::geterror() + ")";
     const OIIO::TypeDesc type = wants_float(ext) ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
@@ -46,12 +42,7 @@ std::string write_image_atomic(const std::string& path, const ImageView& image) 
     }
     if (!out->close() && error.empty()) error = path + ": write failed: " + out->geterror();
     out.reset();
-    if (error.empty()) {
-        fs::rename(tmp, dest, ec);
-        if (ec) error = path + ": cannot move the finished image into place: " + ec.message();
-    }
-    if (!error.empty()) fs::remove(tmp, ec);
-    return error;
+    return finish_temporary(tmp, dest, std::move(error));
 }
 
 } // namespace casteljau

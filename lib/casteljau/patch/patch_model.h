@@ -9,12 +9,18 @@
 
 #include "casteljau/patch/bezier_patch.h"
 
+#include <span>
 #include <variant>
 #include <vector>
 
 namespace casteljau {
 
 using AnyPatch = std::variant<BilinearPatch, QuadPatch, CubicPatch>;
+
+// The Bezier patch of degree du in u and dv in v (each 1 to 3) on a grid of
+// dv + 1 rows of du + 1 points (row-major, rows along v), degree-elevated to
+// the square kind of the larger degree.
+AnyPatch bezier_from_grid(int du, int dv, std::span<const PatchPoint> points);
 
 struct PatchModel {
     std::vector<AnyPatch> patches;

@@ -1,0 +1,190 @@
+// `casteljau patch IN.{bpt,map,json} -o OUT.png [--width W --height H] [--tolerance PX]
+//   [--tessellate adaptive|uniform] [--steps N] [--view AZ,EL] [--texture IMG|checker|none]
+//   [--wireframe] [--mesh OUT.{obj,ply}] [--background COLOR] [--stats FILE|-]`
+//
+// Reads the patches, tessellates them for the view (adaptive: within
+// --tolerance px on screen; uniform: --steps N per patch side, or without N
+// the fewest steps whose measured error meets the tolerance), renders the
+// mesh and writes the image (and the mesh). The camera is the file's own
+// (.json "camera") unless --view is given; otherwise an orbit view fitted to
+// the model at --view AZ,EL (default 35,25).
+#include "casteljau/io/canvas_write.h"
+#include "casteljau/io/mesh_write.h"
+#include "casteljau/io/patch_read.h"
+#include "casteljau/render3d/mesh_raster.h"
+#include "casteljau/svg/color.h"
+#include "casteljau/tessellate/adaptive.h"
+#include "casteljau/tessellate/error.h"
+#include "casteljau/tessellate/uniform.h"
+#include "commands.h"
+#include "common.h"
+#include "json.h"
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+
+namespace casteljau::cli {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Limits of the patch command. Tolerances below 0.01 px ask for triangles
+// smaller than the z-buffer's samples (1/4 px apart) can tell apart; uniform
+// grids are capped at 1024 steps a side and 2^25 triangles in all.
+constexpr double kMinPatchTolerance = 0.01;
+constexpr int kMaxSteps = 1024;
+constexpr double kMaxUniformTriangles = double(1 << 25);
+
+struct PatchArgs {
+    std::string input, output, mesh, stats, texture = "checker", background = "white";
+    int width = 800, height = 600;
+    double tolerance = 0.25;
+    bool adaptive = true, wireframe = false;
+    int steps = 0;
+    std::vector<double> view;
+};
+
+double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
+
+// The fewest uniform steps whose measured error meets the tolerance: doubling,
+// then bisection (the error falls as the steps grow, up to rounding).
+int fewest_steps(const PatchModel& model, const ScreenProjection& view, double tol, Mesh& mesh) {
+    const auto meets = [&](int n) {
+        tessellate_uniform(model, n, n, mesh);
+        return measure_max_error_px(model, mesh, view) <= tol;
+    };
+    int hi = 1;
+    while (hi < kMaxSteps && !meets(hi)) hi = std::min(2 * hi, kMaxSteps);
+    int lo = hi / 2; // fails (or is 0)
+    while (hi - lo > 1) {
+        const int mid = (lo + hi) / 2;
+        (meets(mid) ? hi : lo) = mid;
+    }
+    return hi;
+}
+
+int fail(int status, const std::string& message) {
+    std::fprintf(stderr, "error: %s\n", message.c_str());
+    return status;
+}
+
+int run_patch(const PatchArgs& a) {
+    const auto t0 = Clock::now();
+    if (a.tolerance < kMinPatchTolerance || a.tolerance > 1)
+        return fail(kExitBadInput, "casteljau patch: --tolerance " + std::to_string(a.tolerance) +
+                                       ": must be a number of device pixels in [0.01, 1]");
+    if (double(a.width) * a.height > kMaxPixels)
+        return fail(kExitBadInput, "casteljau patch: the image is larger than 2^26 pixels");
+    const auto background = parse_color(a.background);
+    if (!background)
+        return fail(kExitBadInput, "casteljau patch: --background '" + a.background +
+                                       "' is not a color");
+    Texture texture;
+    if (a.texture != "checker" && a.texture != "none") {
+        const std::string err = texture.load(a.texture);
+        if (!err.empty()) return fail(kExitBadInput, "--texture " + err);
+    }
+    const PatchFile file = read_patch_file(a.input);
+    if (!file.model) return fail(file.io_error ? kExitFailure : kExitBadInput, file.error);
+    const PatchModel& model = *file.model;
+    const double parse_ms = ms(Clock::now() - t0);
+
+    const LookAt camera = file.camera && a.view.empty()
+                              ? *file.camera
+                              : orbit_view(model.control_bounds(), a.view.empty() ? 35 : a.view[0],
+                                           a.view.empty() ? 25 : a.view[1], a.width, a.height);
+    const ScreenProjection view = make_projection(camera, a.width, a.height);
+
+    const auto t1 = Clock::now();
+    Mesh mesh;
+    int steps = a.steps;
+    if (a.adaptive) {
+        tessellate_adaptive(model, view, a.tolerance, mesh);
+    } else {
+        if (steps > 0 && double(steps) * steps * 2 * model.patches.size() > kMaxUniformTriangles)
+            return fail(kExitBadInput, "casteljau patch: --steps " + std::to_string(steps) +
+                                           " makes more than 2^25 triangles");
+        if (steps == 0) steps = fewest_steps(model, view, a.tolerance, mesh);
+        tessellate_uniform(model, steps, steps, mesh);
+    }
+    const double tessellate_ms = ms(Clock::now() - t1);
+
+    const auto t2 = Clock::now();
+    Canvas canvas(a.width, a.height);
+    canvas.fill(premultiply(*background));
+    MeshRenderer renderer;
+    renderer.render(mesh, view, {a.texture == "none" ? nullptr : &texture, {0.75f, 0.75f, 0.75f},
+                                 a.wireframe},
+                    canvas);
+    const double raster_ms = ms(Clock::now() - t2);
+
+    const auto t3 = Clock::now();
+    if (const std::string err = write_canvas_atomic(a.output, canvas); !err.empty())
+        return fail(kExitFailure, err);
+    const double encode_ms = ms(Clock::now() - t3);
+    if (!a.mesh.empty())
+        if (const std::string err = write_mesh_atomic(a.mesh, mesh); !err.empty())
+            return fail(kExitFailure, err);
+    const double total_ms = ms(Clock::now() - t0);
+    if (a.stats.empty()) return kExitOk;
+
+    const std::string json =
+        "{\"input\": " + json_string(a.input) + ", \"output\": " + json_string(a.output) +
+        ", \"patches\": " + std::to_string(model.patches.size()) +
+        ", \"tessellate\": " + json_string(a.adaptive ? "adaptive" : "uniform") +
+        ", \"steps\": " + std::to_string(steps) +
+        ", \"tolerance_px\": " + json_number(a.tolerance) +
+        ", \"triangles\": " + std::to_string(mesh.triangles.size()) +
+        ", \"vertices\": " + std::to_string(mesh.positions.size()) +
+        ", \"max_error_px\": " + json_number(measure_max_error_px(model, mesh, view)) +
+        ", \"parse_ms\": " + json_number(parse_ms) +
+        ", \"tessellate_ms\": " + json_number(tessellate_ms) +
+        ", \"raster_ms\": " + json_number(raster_ms) + ", \"encode_ms\": " + json_number(encode_ms) +
+        ", \"total_ms\": " + json_number(total_ms) + ", \"width\": " + std::to_string(a.width) +
+        ", \"height\": " + std::to_string(a.height) + "}\n";
+    if (a.stats == "-") std::fputs(json.c_str(), stdout);
+    else if (!(std::ofstream(a.stats) << json))
+        return fail(kExitFailure, "casteljau patch: --stats " + a.stats + ": cannot write");
+    return kExitOk;
+}
+
+} // namespace
+
+Command add_patch_command(CLI::App& app) {
+    auto a = std::make_shared<PatchArgs>();
+    CLI::App* cmd = app.add_subcommand("patch", "Tessellate and render surface patches");
+    cmd->add_option("input", a->input, "Patches: .bpt, Quake 3 .map or .json")
+        ->required()
+        ->check(CLI::ExistingFile);
+    cmd->add_option("-o,--output", a->output, "Image to write (.png, .tif, .exr, .jpg)")
+        ->required();
+    cmd->add_option("--width", a->width, "Image width in pixels (default 800)")
+        ->check(CLI::Range(1, kMaxSide));
+    cmd->add_option("--height", a->height, "Image height in pixels (default 600)")
+        ->check(CLI::Range(1, kMaxSide));
+    cmd->add_option("--tolerance", a->tolerance,
+                    "Largest distance between mesh and surface on screen, px, in [0.01, 1] "
+                    "(default 0.25)");
+    const std::map<std::string, bool> methods{{"adaptive", true}, {"uniform", false}};
+    cmd->add_option("--tessellate", a->adaptive, "adaptive (default) or uniform")
+        ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
+    cmd->add_option("--steps", a->steps,
+                    "Uniform only: steps per patch side (default: the fewest that meet the "
+                    "tolerance, measured)")
+        ->check(CLI::Range(1, kMaxSteps));
+    cmd->add_option("--view", a->view, "Azimuth and elevation in degrees, AZ,EL (default 35,25)")
+        ->delimiter(',')
+        ->expected(2)
+        ->check(CLI::Range(-360.0, 360.0));
+    cmd->add_option("--texture", a->texture, "checker (default), none, or an image file");
+    cmd->add_flag("--wireframe", a->wireframe, "Draw the triangles' edges on top");
+    cmd->add_option("--mesh", a->mesh, "Also write the mesh (.obj or .ply)");
+    cmd->add_option("--background", a->background, "Background color (default white)");
+    cmd->add_option("--stats", a->stats, "Write statistics as JSON to FILE, or - for stdout");
+    return [a] { return run_patch(*a); };
+}
+
+} // namespace casteljau::cli

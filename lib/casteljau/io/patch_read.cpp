@@ -1,0 +1,60 @@
+#include "casteljau/io/patch_read.h"
+
+#include "casteljau/io/detail/patch_formats.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace casteljau {
+
+PatchFile parse_patches(std::string_view text, PatchFormat format, const std::string& name,
+                        const PatchLimits& limits) {
+    PatchFile out;
+    try {
+        switch (format) {
+        case PatchFormat::Bpt: out.model = detail::parse_bpt(text, limits); break;
+        case PatchFormat::QuakeMap: out.model = detail::parse_quake_map(text, limits); break;
+        case PatchFormat::Json:
+            out.model = detail::parse_patch_json(text, limits, out.camera);
+            break;
+        }
+    } catch (const detail::ReadError& e) {
+        out.model.reset();
+        out.camera.reset();
+        out.error = name + ":" + std::to_string(e.line) + ": " + e.what;
+    }
+    return out;
+}
+
+PatchFile read_patch_file(const std::string& path, const PatchLimits& limits) {
+    namespace fs = std::filesystem;
+    const std::string ext = fs::path(path).extension().string();
+    PatchFile out;
+    PatchFormat format;
+    if (ext == ".bpt") format = PatchFormat::Bpt;
+    else if (ext == ".map") format = PatchFormat::QuakeMap;
+    else if (ext == ".json") format = PatchFormat::Json;
+    else {
+        out.error = path + ": unknown patch format '" + ext + "' (expected .bpt, .map or .json)";
+        return out;
+    }
+    std::error_code ec;
+    const auto size = fs::file_size(path, ec);
+    std::ifstream in(path, std::ios::binary);
+    if (ec || !in) {
+        out.error = path + ": cannot read the file";
+        out.io_error = true;
+        return out;
+    }
+    if (size > limits.max_file_bytes) {
+        out.error = path + ": " + std::to_string(size) + " bytes, more than the limit of " +
+                    std::to_string(limits.max_file_bytes);
+        return out;
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parse_patches(text.str(), format, path, limits);
+}
+
+} // namespace casteljau

@@ -1,0 +1,180 @@
+#include "casteljau/render3d/mesh_raster.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace casteljau {
+
+namespace {
+
+constexpr int kGrid = 4;                   // samples a pixel side
+constexpr int kSamples = kGrid * kGrid;    // 16: one 8-bit step is 1/255, 16 levels is plenty
+constexpr int kBand = 16;                  // rows a band: 16 x 16 samples x 20 B x width
+constexpr float kAmbient = 0.18f, kDiffuse = 0.82f, kSpecular = 0.3f;
+constexpr double kShininess = 48;
+const Rgb kWire{0.05f, 0.05f, 0.08f};
+
+using Vertex = MeshRenderer::ScreenVertex;
+
+Vertex lerp_vertex(const Vertex& a, const Vertex& b, double t) {
+    return {lerp(a.c, b.c, t), lerp(a.n, b.n, t), lerp(a.st, b.st, t), {}, 0};
+}
+
+float linear_to_srgb(float c) {
+    return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1 / 2.4f) - 0.055f;
+}
+
+double edge(Point a, Point b, Point p) { return (b - a).cross(p - a); }
+
+} // namespace
+
+void MeshRenderer::setup(const Mesh& mesh, const ScreenProjection& view) {
+    verts_.resize(mesh.positions.size());
+    for (std::size_t i = 0; i < verts_.size(); ++i) {
+        const Vec3 n = mesh.normals[i];
+        verts_[i] = {view.to_camera(mesh.positions[i]),
+                     {n.dot(view.right), n.dot(view.down), n.dot(view.forward)},
+                     mesh.st[i], {}, 0};
+    }
+    tris_.clear();
+    for (const auto& t : mesh.triangles) {
+        const Vertex* v[3] = {&verts_[t[0]], &verts_[t[1]], &verts_[t[2]]};
+        // Clip against z = near (Sutherland-Hodgman, one plane): 0, 3 or 4 corners.
+        Vertex poly[4];
+        int n = 0;
+        for (int k = 0; k < 3; ++k) {
+            const Vertex& a = *v[k];
+            const Vertex& b = *v[(k + 1) % 3];
+            const bool ina = a.c.z >= view.near, inb = b.c.z >= view.near;
+            if (ina) poly[n++] = a;
+            if (ina != inb) poly[n++] = lerp_vertex(a, b, (view.near - a.c.z) / (b.c.z - a.c.z));
+        }
+        for (int k = 1; k + 1 < n; ++k) add_triangle({poly[0], poly[k], poly[k + 1]}, view);
+    }
+    std::sort(tris_.begin(), tris_.end(),
+              [](const ScreenTriangle& a, const ScreenTriangle& b) { return a.y0 < b.y0; });
+}
+
+void MeshRenderer::add_triangle(const Vertex (&v)[3], const ScreenProjection& view) {
+    ScreenTriangle t;
+    for (int k = 0; k < 3; ++k) {
+        t.v[k] = v[k];
+        t.v[k].w = 1 / std::max(v[k].c.z, view.near);
+        t.v[k].px = view.to_pixels({v[k].c.x, v[k].c.y, std::max(v[k].c.z, view.near)});
+    }
+    const double area = edge(t.v[0].px, t.v[1].px, t.v[2].px);
+    if (!(std::abs(area) > 1e-12)) return; // edge-on or degenerate: covers no sample
+    t.y0 = std::min({t.v[0].px.y, t.v[1].px.y, t.v[2].px.y});
+    t.y1 = std::max({t.v[0].px.y, t.v[1].px.y, t.v[2].px.y});
+    if (t.y1 < 0 || t.y0 > view.height) return;
+    // d(s, t)/d(pixel) of the affine screen-space map: the filter footprint.
+    const Vec2 e1 = t.v[1].px - t.v[0].px, e2 = t.v[2].px - t.v[0].px;
+    const Vec2 s1 = t.v[1].st - t.v[0].st, s2 = t.v[2].st - t.v[0].st;
+    const double dsdx = (s1.x * e2.y - s2.x * e1.y) / area, dsdy = (s2.x * e1.x - s1.x * e2.x) / area;
+    const double dtdx = (s1.y * e2.y - s2.y * e1.y) / area, dtdy = (s2.y * e1.x - s1.y * e2.x) / area;
+    t.footprint = {std::abs(dsdx) + std::abs(dsdy), std::abs(dtdx) + std::abs(dtdy)};
+    tris_.push_back(t);
+}
+
+void MeshRenderer::render(const Mesh& mesh, const ScreenProjection& view, const MeshStyle& style,
+                          Canvas& canvas) {
+    setup(mesh, view);
+    const int width = canvas.width();
+    depth_.resize(std::size_t(width) * kBand * kSamples);
+    color_.resize(depth_.size());
+    for (int y0 = 0; y0 < canvas.height(); y0 += kBand)
+        draw_band(y0, std::min(y0 + kBand, canvas.height()), width, style, canvas);
+}
+
+void MeshRenderer::draw_band(int y0, int y1, int width, const MeshStyle& style, Canvas& canvas) {
+    std::fill(depth_.begin(), depth_.end(), 0.0f);
+    for (const ScreenTriangle& t : tris_) {
+        if (t.y0 >= y1) break; // sorted by top row
+        if (t.y1 >= y0) draw_triangle(t, y0, y1, width, style);
+    }
+    for (int y = y0; y < y1; ++y) {
+        Premul* row = canvas.row(y);
+        for (int x = 0; x < width; ++x) {
+            const std::size_t base = (std::size_t(y - y0) * width + x) * kSamples;
+            Rgb sum;
+            int covered = 0;
+            for (int s = 0; s < kSamples; ++s) {
+                if (depth_[base + s] == 0) continue;
+                ++covered;
+                sum.r += color_[base + s].r, sum.g += color_[base + s].g, sum.b += color_[base + s].b;
+            }
+            if (covered == 0) continue;
+            const float a = float(covered) / kSamples, inv = 1.0f / covered;
+            const Premul c{a * linear_to_srgb(sum.r * inv), a * linear_to_srgb(sum.g * inv),
+                           a * linear_to_srgb(sum.b * inv), a};
+            blend_over(row[x], c, 1.0f);
+        }
+    }
+}
+
+void MeshRenderer::draw_triangle(const ScreenTriangle& t, int y0, int y1, int width,
+                                 const MeshStyle& style) {
+    const Point a = t.v[0].px, b = t.v[1].px, c = t.v[2].px;
+    const double area = edge(a, b, c), inv_area = 1 / area;
+    const int xa = std::max(0, int(std::floor(std::min({a.x, b.x, c.x}))));
+    const int xb = std::min(width - 1, int(std::floor(std::max({a.x, b.x, c.x}))));
+    const int ya = std::max(y0, int(std::floor(t.y0))), yb = std::min(y1 - 1, int(std::floor(t.y1)));
+    const double len[3] = {(c - b).length(), (a - c).length(), (b - a).length()};
+    const Vec3 light = Vec3{-0.5, -0.7, -1.0}.normalized(); // toward the light, camera space
+    for (int y = ya; y <= yb; ++y)
+        for (int x = xa; x <= xb; ++x) {
+            const std::size_t base = (std::size_t(y - y0) * width + x) * kSamples;
+            unsigned mask = 0;
+            for (int s = 0; s < kSamples; ++s) {
+                const Point p{x + (s % kGrid + 0.5) / kGrid, y + (s / kGrid + 0.5) / kGrid};
+                const double l0 = edge(b, c, p) * inv_area, l1 = edge(c, a, p) * inv_area,
+                             l2 = edge(a, b, p) * inv_area;
+                if (l0 < 0 || l1 < 0 || l2 < 0) continue;
+                const float w = float(l0 * t.v[0].w + l1 * t.v[1].w + l2 * t.v[2].w);
+                if (w <= depth_[base + s]) continue;
+                depth_[base + s] = w;
+                mask |= 1u << s;
+            }
+            if (!mask) continue;
+            // Shade once, at the pixel centre clamped into the triangle.
+            const Point p{x + 0.5, y + 0.5};
+            double l[3] = {std::max(0.0, edge(b, c, p) * inv_area),
+                           std::max(0.0, edge(c, a, p) * inv_area),
+                           std::max(0.0, edge(a, b, p) * inv_area)};
+            double sum = 0;
+            for (int k = 0; k < 3; ++k) sum += (l[k] *= t.v[k].w);
+            Vec3 n{}, pos{};
+            Vec2 st{};
+            for (int k = 0; k < 3; ++k) {
+                const double bk = l[k] / sum;
+                n += bk * t.v[k].n;
+                pos += bk * t.v[k].c;
+                st += bk * t.v[k].st.to_vec();
+            }
+            const Vec3 view = (-pos).normalized();
+            if (n.length_sq() == 0) n = (t.v[1].c - t.v[0].c).cross(t.v[2].c - t.v[0].c);
+            n = n.normalized();
+            if (n.dot(view) < 0) n = -n;
+            const Rgb albedo = style.texture ? style.texture->at(Point{} + st, t.footprint)
+                                             : style.albedo;
+            const float diffuse = kAmbient + kDiffuse * float(std::max(0.0, n.dot(light)));
+            const float spec =
+                kSpecular * float(std::pow(std::max(0.0, n.dot((light + view).normalized())),
+                                           kShininess));
+            Rgb color{albedo.r * diffuse + spec, albedo.g * diffuse + spec,
+                      albedo.b * diffuse + spec};
+            if (style.wireframe) {
+                // Distance in pixels from the centre to the nearest edge.
+                const double d = std::min({std::abs(edge(b, c, p)) / len[0],
+                                           std::abs(edge(c, a, p)) / len[1],
+                                           std::abs(edge(a, b, p)) / len[2]});
+                const float k = float(std::clamp(1.0 - d, 0.0, 1.0));
+                color = {color.r + k * (kWire.r - color.r), color.g + k * (kWire.g - color.g),
+                         color.b + k * (kWire.b - color.b)};
+            }
+            for (int s = 0; s < kSamples; ++s)
+                if (mask & (1u << s)) color_[base + s] = color;
+        }
+}
+
+} // namespace casteljau

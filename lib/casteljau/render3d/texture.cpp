@@ -1,0 +1,87 @@
+#include "casteljau/render3d/texture.h"
+
+#include <OpenImageIO/imageio.h>
+#include <algorithm>
+#include <cmath>
+
+namespace casteljau {
+
+namespace {
+
+// Squares per unit of s and of t.
+constexpr double kChecks = 8;
+const Rgb kLight{0.80f, 0.78f, 0.72f}, kDark{0.30f, 0.33f, 0.42f};
+
+// The integral of the square wave that is +1 on [0, 1), -1 on [1, 2), period 2.
+double triangle_wave(double x) {
+    const double f = x - 2 * std::floor(x / 2); // in [0, 2)
+    return f < 1 ? f : 2 - f;
+}
+
+// The square wave averaged over [x - w/2, x + w/2].
+double filtered_square(double x, double w) {
+    if (w < 1e-6) return x - 2 * std::floor(x / 2) < 1 ? 1 : -1;
+    return (triangle_wave(x + w / 2) - triangle_wave(x - w / 2)) / w;
+}
+
+float srgb_to_linear(float c) {
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+} // namespace
+
+std::string Texture::load(const std::string& path) {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) return path + ": cannot read the texture (" + OIIO::geterror() + ")";
+    const OIIO::ImageSpec& spec = in->spec();
+    // The same pixel limits as output images: 16384 a side, 2^26 pixels.
+    if (spec.width < 1 || spec.height < 1 || spec.width > 16384 || spec.height > 16384 ||
+        double(spec.width) * spec.height > double(1 << 26))
+        return path + ": texture size " + std::to_string(spec.width) + " x " +
+               std::to_string(spec.height) + " is outside 1..16384 a side, 2^26 pixels";
+    const int channels = spec.nchannels;
+    std::vector<float> data(std::size_t(spec.width) * spec.height * channels);
+    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
+        return path + ": cannot read the texture (" + in->geterror() + ")";
+    const bool linear = spec.get_string_attribute("oiio:ColorSpace") == "Linear";
+    w_ = spec.width;
+    h_ = spec.height;
+    px_.resize(std::size_t(w_) * h_);
+    for (std::size_t i = 0; i < px_.size(); ++i) {
+        const float* p = &data[i * channels];
+        float c[3] = {p[0], p[channels > 1 ? 1 : 0], p[channels > 2 ? 2 : 0]};
+        for (float& v : c) v = std::clamp(linear ? v : srgb_to_linear(v), 0.0f, 1.0f);
+        px_[i] = {c[0], c[1], c[2]};
+    }
+    return {};
+}
+
+Rgb Texture::checker(Point st, Vec2 footprint) const {
+    const double k = filtered_square(st.x * kChecks, footprint.x * kChecks) *
+                     filtered_square(st.y * kChecks, footprint.y * kChecks);
+    const float a = float(0.5 + 0.5 * k);
+    return {kDark.r + a * (kLight.r - kDark.r), kDark.g + a * (kLight.g - kDark.g),
+            kDark.b + a * (kLight.b - kDark.b)};
+}
+
+Rgb Texture::texel(int x, int y) const {
+    x %= w_, y %= h_;
+    return px_[std::size_t(y < 0 ? y + h_ : y) * w_ + (x < 0 ? x + w_ : x)];
+}
+
+Rgb Texture::at(Point st, Vec2 footprint) const {
+    if (px_.empty()) return checker(st, footprint);
+    // t runs up the image, as in OBJ and Quake texture space.
+    const double x = st.x * w_ - 0.5, y = (1 - st.y) * h_ - 0.5;
+    const double fx = std::floor(x), fy = std::floor(y);
+    const float ax = float(x - fx), ay = float(y - fy);
+    const int x0 = int(std::fmod(fx, w_)), y0 = int(std::fmod(fy, h_));
+    const Rgb a = texel(x0, y0), b = texel(x0 + 1, y0), c = texel(x0, y0 + 1),
+              d = texel(x0 + 1, y0 + 1);
+    const auto mix = [&](float p, float q, float r, float s) {
+        return (1 - ay) * ((1 - ax) * p + ax * q) + ay * ((1 - ax) * r + ax * s);
+    };
+    return {mix(a.r, b.r, c.r, d.r), mix(a.g, b.g, c.g, d.g), mix(a.b, b.b, c.b, d.b)};
+}
+
+} // namespace casteljau

@@ -1,0 +1,42 @@
+// Textures looked up by the surface's (s, t).
+//
+// * Checker: squares of 1/8 in (s, t), box-filtered over the pixel's
+//   footprint (ds, dt): the box-filtered square wave is the difference
+//   quotient of its integral, a triangle wave, and the 2D checker is the
+//   product of two square waves, so its filtered value is the product of the
+//   two filtered ones. No aliasing moire at grazing angles, no mip maps.
+// * Image: read through OpenImageIO, stored linear, looked up bilinearly and
+//   repeated in both directions (s = 0..1 spans the image once). No mip maps:
+//   minified image textures alias.
+// Values are linear-light RGB albedo in [0, 1].
+#pragma once
+
+#include "casteljau/geom/point.h"
+
+#include <string>
+#include <vector>
+
+namespace casteljau {
+
+struct Rgb {
+    float r = 0, g = 0, b = 0;
+};
+
+class Texture {
+  public:
+    // The checker.
+    Texture() = default;
+    // Reads an image; returns an empty string on success, otherwise the error.
+    std::string load(const std::string& path);
+    // `footprint`: the extent in (s, t) of one pixel, for filtering.
+    Rgb at(Point st, Vec2 footprint) const;
+
+  private:
+    Rgb checker(Point st, Vec2 footprint) const;
+    Rgb texel(int x, int y) const;
+
+    std::vector<Rgb> px_;
+    int w_ = 0, h_ = 0;
+};
+
+} // namespace casteljau
