@@ -6,6 +6,7 @@
 #   out/svg/*.png           the example SVG files rendered by `casteljau render`
 #   out/svg/stats.json      their render statistics (one JSON object per file)
 #   out/compare/            `casteljau compare` on the curves example: images, heat map, report.md
+#   out/patch/              `casteljau patch` on the patch examples: shaded, wireframe, OBJ meshes, stats.json
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -14,6 +15,7 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j "$(nproc)"
 
 mkdir -p out
+rm -f out/patch/stats.json
 build/examples/curves_image out/curves.png 0.25 | tee out/curves.txt
 while read -r name data; do
   for method in adaptive uniform; do
@@ -25,4 +27,12 @@ build/cli/casteljau render examples/svg/*.svg -o out/svg/ --scale 2 --stats out/
 echo "rendered $(ls out/svg/*.png | wc -l) SVG examples into out/svg/"
 build/cli/casteljau compare examples/svg/curves.svg -o out/compare --segments 8 > /dev/null
 echo "adaptive vs uniform report: out/compare/report.md"
+mkdir -p out/patch
+for f in examples/patch/*.map examples/patch/*.bpt examples/patch/*.json; do
+  name=$(basename "${f%.*}")
+  build/cli/casteljau patch "$f" -o "out/patch/$name.png" --stats - >> out/patch/stats.json
+  build/cli/casteljau patch "$f" -o "out/patch/$name-wire.png" --wireframe --texture none \
+    --mesh "out/patch/$name.obj"
+done
+echo "rendered $(ls out/patch/*.png | wc -l) patch images and meshes into out/patch/"
 echo "examples written to $(pwd)/out"
