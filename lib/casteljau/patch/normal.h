@@ -12,7 +12,7 @@
 // step toward the patch centre. A patch collapsed to a point has none: {}.
 #pragma once
 
-#include "casteljau/geom/point3.h"
+#include "casteljau/patch/bezier_patch.h"
 
 namespace casteljau {
 
@@ -27,10 +27,11 @@ inline bool normal_is_degenerate(Vec3 n, double size) {
 
 } // namespace detail
 
+// With the derivatives at (u, v) and the control net's size already at hand
+// (the tessellators have both).
 template <class Patch>
-Vec3 patch_normal(const Patch& patch, double u, double v) {
-    const double size = patch.control_bounds().diagonal();
-    const auto d = patch.derivatives(u, v);
+Vec3 patch_normal(const Patch& patch, double u, double v, const PatchDerivatives& d,
+                  double size) {
     Vec3 n = d.du.cross(d.dv);
     if (!detail::normal_is_degenerate(n, size)) return n.normalized();
     if (d.du.length_sq() <= d.dv.length_sq())
@@ -44,6 +45,11 @@ Vec3 patch_normal(const Patch& patch, double u, double v) {
         if (!detail::normal_is_degenerate(n, size)) return n.normalized();
     }
     return {};
+}
+
+template <class Patch>
+Vec3 patch_normal(const Patch& patch, double u, double v) {
+    return patch_normal(patch, u, v, patch.derivatives(u, v), patch.control_bounds().diagonal());
 }
 
 } // namespace casteljau

@@ -22,7 +22,7 @@ class GridVertices {
     static constexpr int M = Patch::kDegreeU, N = Patch::kDegreeV;
 
     GridVertices(MeshAssembler& a, const Patch& patch, std::uint32_t patch_index)
-        : a_(a), patch_(patch), index_(patch_index) {
+        : a_(a), patch_(patch), index_(patch_index), size_(patch.control_bounds().diagonal()) {
         const auto right = patch.column(M), left = patch.column(0);
         edges_[kBottom] = a.edge(patch.c[0]);
         edges_[kRight] = a.edge(right);
@@ -38,25 +38,26 @@ class GridVertices {
         const auto [it, inserted] = cache_.try_emplace(key, 0);
         if (!inserted) return it->second;
         const double u = double(i) / double(nu), v = double(j) / double(nv);
-        Point3 p;
+        const PatchDerivatives d = patch_.derivatives(u, v);
+        Point3 p = d.point.p;
         if (j == 0) p = a_.edge_point(edges_[kBottom], i, nu);
         else if (j == nv) p = a_.edge_point(edges_[kTop], i, nu);
         else if (i == 0) p = a_.edge_point(edges_[kLeft], j, nv);
         else if (i == nu) p = a_.edge_point(edges_[kRight], j, nv);
-        else p = patch_.eval(u, v).p;
-        return it->second = a_.vertex(p, patch_normal(patch_, u, v), patch_.eval(u, v).st);
+        return it->second = a_.vertex(p, patch_normal(patch_, u, v, d, size_), d.point.st);
     }
 
     // A vertex of the patch's interior that no other piece shares.
     std::uint32_t interior(double u, double v) {
-        const PatchPoint q = patch_.eval(u, v);
-        return a_.vertex(q.p, patch_normal(patch_, u, v), q.st);
+        const PatchDerivatives d = patch_.derivatives(u, v);
+        return a_.vertex(d.point.p, patch_normal(patch_, u, v, d, size_), d.point.st);
     }
 
   private:
     MeshAssembler& a_;
     const Patch& patch_;
     std::uint32_t index_;
+    double size_;
     EdgeRef edges_[4];
     std::unordered_map<std::uint64_t, std::uint32_t> cache_;
 };
