@@ -6,7 +6,8 @@
 
 int main(int argc, char** argv) {
     using namespace casteljau::cli;
-    CLI::App app{"casteljau: exact, adaptive de Casteljau flattening and rendering of curves and patches"};
+    CLI::App app{
+        "casteljau: exact, adaptive de Casteljau flattening and rendering of curves and patches"};
     app.require_subcommand(1);
     const Command flatten = add_flatten_command(app);
     const Command render = add_render_command(app);

@@ -80,8 +80,8 @@ int run_patch(const PatchArgs& a) {
         return fail(kExitBadInput, "casteljau patch: the image is larger than 2^26 pixels");
     const auto background = parse_color(a.background);
     if (!background)
-        return fail(kExitBadInput, "casteljau patch: --background '" + a.background +
-                                       "' is not a color");
+        return fail(kExitBadInput,
+                    "casteljau patch: --background '" + a.background + "' is not a color");
     Texture texture;
     if (a.texture != "checker" && a.texture != "none") {
         const std::string err = texture.load(a.texture);
@@ -116,8 +116,8 @@ int run_patch(const PatchArgs& a) {
     Canvas canvas(a.width, a.height);
     canvas.fill(premultiply(*background));
     MeshRenderer renderer;
-    renderer.render(mesh, view, {a.texture == "none" ? nullptr : &texture, {0.75f, 0.75f, 0.75f},
-                                 a.wireframe},
+    renderer.render(mesh, view,
+                    {a.texture == "none" ? nullptr : &texture, {0.75f, 0.75f, 0.75f}, a.wireframe},
                     canvas);
     const double raster_ms = ms(Clock::now() - t2);
 
@@ -142,10 +142,12 @@ int run_patch(const PatchArgs& a) {
         ", \"max_error_px\": " + json_number(measure_max_error_px(model, mesh, view)) +
         ", \"parse_ms\": " + json_number(parse_ms) +
         ", \"tessellate_ms\": " + json_number(tessellate_ms) +
-        ", \"raster_ms\": " + json_number(raster_ms) + ", \"encode_ms\": " + json_number(encode_ms) +
-        ", \"total_ms\": " + json_number(total_ms) + ", \"width\": " + std::to_string(a.width) +
-        ", \"height\": " + std::to_string(a.height) + "}\n";
-    if (a.stats == "-") std::fputs(json.c_str(), stdout);
+        ", \"raster_ms\": " + json_number(raster_ms) +
+        ", \"encode_ms\": " + json_number(encode_ms) + ", \"total_ms\": " + json_number(total_ms) +
+        ", \"width\": " + std::to_string(a.width) + ", \"height\": " + std::to_string(a.height) +
+        "}\n";
+    if (a.stats == "-")
+        std::fputs(json.c_str(), stdout);
     else if (!(std::ofstream(a.stats) << json))
         return fail(kExitFailure, "casteljau patch: --stats " + a.stats + ": cannot write");
     return kExitOk;

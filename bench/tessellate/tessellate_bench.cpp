@@ -41,7 +41,8 @@ PatchModel cubic_model() {
     CubicPatch p;
     for (int r = 0; r < 4; ++r)
         for (int k = 0; k < 4; ++k)
-            p.c[r][k] = {{100.0 * k, 100.0 * r, (r == 3 && k == 3) ? 250.0 : 0.0}, {k / 3.0, r / 3.0}};
+            p.c[r][k] = {{100.0 * k, 100.0 * r, (r == 3 && k == 3) ? 250.0 : 0.0},
+                         {k / 3.0, r / 3.0}};
     return single(p);
 }
 
@@ -73,8 +74,10 @@ Setup prepare(PatchModel model) {
 void run(benchmark::State& state, const Setup& s, bool adaptive) {
     Mesh mesh;
     for (auto _ : state) {
-        if (adaptive) tessellate_adaptive(s.model, s.view, kTolerance, mesh);
-        else tessellate_uniform(s.model, s.steps, s.steps, mesh);
+        if (adaptive)
+            tessellate_adaptive(s.model, s.view, kTolerance, mesh);
+        else
+            tessellate_uniform(s.model, s.steps, s.steps, mesh);
         benchmark::DoNotOptimize(mesh.triangles.data());
     }
     state.counters["patches"] = double(s.model.patches.size());

@@ -17,9 +17,7 @@ PatchFile bpt(const std::string& text) { return parse_patches(text, PatchFormat:
 PatchFile map(const std::string& text) {
     return parse_patches(text, PatchFormat::QuakeMap, "t.map");
 }
-PatchFile json(const std::string& text) {
-    return parse_patches(text, PatchFormat::Json, "t.json");
-}
+PatchFile json(const std::string& text) { return parse_patches(text, PatchFormat::Json, "t.json"); }
 
 const char* kBilinear = "1\n1 1\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n";
 
@@ -44,13 +42,15 @@ TEST(BptReader, MalformedFilesNameTheLine) {
         const char* expect;
     } cases[] = {
         {"", "t.bpt:1: unexpected end of file, expected patch count"},
-        {"2\n1 1\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n", "t.bpt:7: unexpected end of file, expected degree m"},
+        {"2\n1 1\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n",
+         "t.bpt:7: unexpected end of file, expected degree m"},
         {"1\n4 1\n", "t.bpt:2: degree m: 4 is not in 1..3"},
         {"1\n1 1\n0 0 0\n1 zero 0\n", "t.bpt:4: y: 'zero' is not a finite number"},
         {"1\n1 1\n0 0 0\n1 nan 0\n", "t.bpt:4: y: 'nan' is not a finite number"},
         {"1\n1 1\n0 0 0\n1 1e999 0\n", "t.bpt:4: y: '1e999' is not a finite number"},
         {"1\n1 1\n0 0 0\n1 0 0\n0 1 0\n1 1\n", "t.bpt:7: unexpected end of file, expected z"},
-        {"1\n1 1\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n5\n", "t.bpt:7: text after the last of the 1 patches"},
+        {"1\n1 1\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n5\n",
+         "t.bpt:7: text after the last of the 1 patches"},
         {"x\n", "t.bpt:1: patch count: 'x' is not an integer"},
     };
     for (const auto& c : cases) {
@@ -67,8 +67,10 @@ std::string grid_map(int rows, int cols, const char* bad = nullptr) {
     for (int r = 0; r < rows; ++r) {
         s << "( ";
         for (int k = 0; k < cols; ++k) {
-            if (bad && r == 1 && k == 1) s << "( " << bad << " 0 0 0 0 ) ";
-            else s << "( " << k << " " << r << " " << (r * k) % 3 << " " << k << " " << r << " ) ";
+            if (bad && r == 1 && k == 1)
+                s << "( " << bad << " 0 0 0 0 ) ";
+            else
+                s << "( " << k << " " << r << " " << (r * k) % 3 << " " << k << " " << r << " ) ";
         }
         s << ")\n";
     }

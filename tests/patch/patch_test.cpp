@@ -58,8 +58,9 @@ TYPED_TEST(BezierPatchTest, DerivativesMatchFiniteDifferences) {
         const auto at = [&](double a, double b) { return p.eval(a, b).p; };
         const Vec3 du = (at(u + h, v) - at(u - h, v)) / (2 * h);
         const Vec3 dv = (at(u, v + h) - at(u, v - h)) / (2 * h);
-        const Vec3 duv = ((at(u + h, v + h) - at(u - h, v + h)) -
-                          (at(u + h, v - h) - at(u - h, v - h))) / (4 * h * h);
+        const Vec3 duv =
+            ((at(u + h, v + h) - at(u - h, v + h)) - (at(u + h, v - h) - at(u - h, v - h))) /
+            (4 * h * h);
         EXPECT_LE((d.du - du).length(), 1e-5) << "u " << u << " v " << v;
         EXPECT_LE((d.dv - dv).length(), 1e-5) << "u " << u << " v " << v;
         EXPECT_LE((d.duv - duv).length(), 1e-2) << "u " << u << " v " << v;

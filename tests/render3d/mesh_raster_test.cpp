@@ -103,7 +103,8 @@ TEST(Camera, OrbitViewFramesTheModel) {
                     }
             // The model is large in the frame: the sphere (radius 1, in a box whose
             // bounding sphere has radius sqrt 3) spans over half the height.
-            const double span = distance(v.project(Point3{} - v.right), v.project(Point3{} + v.right));
+            const double span =
+                distance(v.project(Point3{} - v.right), v.project(Point3{} + v.right));
             EXPECT_GT(span, 100) << "az " << az << " el " << el;
         }
 }

@@ -50,8 +50,8 @@ PatchModel arch_model() {
             // which makes each biquadratic piece an exact-looking quarter arc.
             const double a = std::numbers::pi * (k / 2) / 4 + (k % 2) * std::numbers::pi / 8;
             const double radius = 128 * (k % 2 ? 1 / std::cos(std::numbers::pi / 8) : 1.0);
-            grid.push_back({{radius * std::cos(a), 48.0 * r, radius * std::sin(a)},
-                            {k / 8.0 * 4, r / 4.0}});
+            grid.push_back(
+                {{radius * std::cos(a), 48.0 * r, radius * std::sin(a)}, {k / 8.0 * 4, r / 4.0}});
         }
     PatchModel model;
     for (const QuadPatch& p : quad_grid_patches(rows, cols, grid)) model.patches.push_back(p);
@@ -86,7 +86,8 @@ Topology mesh_topology(const Mesh& mesh) {
     for (const auto& t : mesh.triangles) {
         const std::size_t a = welded[t[0]], b = welded[t[1]], c = welded[t[2]];
         if (a == b || b == c || c == a) continue;
-        for (auto [p, q] : {std::pair{a, b}, {b, c}, {c, a}}) ++uses[{std::min(p, q), std::max(p, q)}];
+        for (auto [p, q] : {std::pair{a, b}, {b, c}, {c, a}})
+            ++uses[{std::min(p, q), std::max(p, q)}];
     }
     Topology topo;
     topo.edges = uses.size();

@@ -37,9 +37,9 @@ PatchModel bump_model();
 // corners weld to fewer than three points are ignored.
 struct Topology {
     std::size_t edges = 0;
-    std::size_t boundary_edges = 0;  // used by one triangle
-    std::size_t overused_edges = 0;  // used by more than two
-    std::size_t t_junctions = 0;     // vertices strictly inside a boundary edge
+    std::size_t boundary_edges = 0; // used by one triangle
+    std::size_t overused_edges = 0; // used by more than two
+    std::size_t t_junctions = 0;    // vertices strictly inside a boundary edge
 };
 Topology mesh_topology(const Mesh& mesh);
 

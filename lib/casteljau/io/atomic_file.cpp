@@ -20,7 +20,8 @@ std::string finish_temporary(const fs::path& tmp, const fs::path& dest, std::str
     std::error_code ec;
     if (error.empty()) {
         fs::rename(tmp, dest, ec);
-        if (ec) error = dest.string() + ": cannot move the finished file into place: " + ec.message();
+        if (ec)
+            error = dest.string() + ": cannot move the finished file into place: " + ec.message();
     }
     if (!error.empty()) fs::remove(tmp, ec);
     return error;

@@ -20,8 +20,8 @@ void read_patch_def(Tokens& tokens, const PatchLimits& limits, PatchModel& model
     const int line = tokens.line();
     const int cols = tokens.integer("patch height", 3, limits.max_grid_side);
     if (rows % 2 == 0 || cols % 2 == 0)
-        throw ReadError{line, "patch grid " + std::to_string(rows) + " x " +
-                                  std::to_string(cols) + ": both sizes must be odd"};
+        throw ReadError{line, "patch grid " + std::to_string(rows) + " x " + std::to_string(cols) +
+                                  ": both sizes must be odd"};
     for (int i = 0; i < 3; ++i) tokens.number("patch parameter");
     tokens.expect_text(")");
     check_patch_count(model.patches.size(), std::size_t(rows / 2) * (cols / 2), limits, line);

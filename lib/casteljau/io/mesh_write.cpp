@@ -15,8 +15,8 @@ namespace fs = std::filesystem;
 namespace {
 
 void write_obj(std::ofstream& out, const Mesh& m) {
-    out << "# casteljau tessellation: " << m.positions.size() << " vertices, "
-        << m.triangles.size() << " triangles\n";
+    out << "# casteljau tessellation: " << m.positions.size() << " vertices, " << m.triangles.size()
+        << " triangles\n";
     char line[128];
     // %.9g: enough digits for a float's worth of precision and well within a line.
     for (const Point3& p : m.positions) {
@@ -33,8 +33,8 @@ void write_obj(std::ofstream& out, const Mesh& m) {
     }
     for (const auto& t : m.triangles) {
         const unsigned a = t[0] + 1, b = t[1] + 1, c = t[2] + 1;
-        std::snprintf(line, sizeof line, "f %u/%u/%u %u/%u/%u %u/%u/%u\n", a, a, a, b, b, b, c,
-                      c, c);
+        std::snprintf(line, sizeof line, "f %u/%u/%u %u/%u/%u %u/%u/%u\n", a, a, a, b, b, b, c, c,
+                      c);
         out << line;
     }
 }
@@ -78,8 +78,10 @@ std::string write_mesh_atomic(const std::string& path, const Mesh& mesh) {
     {
         std::ofstream out(tmp, std::ios::binary);
         if (!out) return path + ": cannot write";
-        if (ext == ".obj") write_obj(out, mesh);
-        else write_ply(out, mesh);
+        if (ext == ".obj")
+            write_obj(out, mesh);
+        else
+            write_ply(out, mesh);
         out.close();
         if (!out) error = path + ": write failed";
     }

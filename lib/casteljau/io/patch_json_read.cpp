@@ -12,7 +12,9 @@ namespace {
 
 using Kind = JsonValue::Kind;
 
-[[noreturn]] void fail(const JsonValue& v, const std::string& what) { throw ReadError{v.line, what}; }
+[[noreturn]] void fail(const JsonValue& v, const std::string& what) {
+    throw ReadError{v.line, what};
+}
 
 const JsonValue& member(const JsonValue& obj, const char* key, Kind kind, const char* kind_name) {
     const JsonValue* v = obj.find(key);
@@ -84,7 +86,8 @@ void read_patch(const JsonValue& patch, const PatchLimits& limits, PatchModel& m
         }
         check_patch_count(model.patches.size(), std::size_t(rows - 3) * (cols - 3), limits,
                           patch.line);
-        for (const BSplinePatch& b : bspline_grid_patches(rows, cols, grid_points(patch, rows, cols)))
+        for (const BSplinePatch& b :
+             bspline_grid_patches(rows, cols, grid_points(patch, rows, cols)))
             model.patches.push_back(b.to_bezier());
     } else {
         fail(patch, "patch type '" + type + "' is neither \"bezier\" nor \"bspline\"");

@@ -13,8 +13,12 @@ PatchFile parse_patches(std::string_view text, PatchFormat format, const std::st
     PatchFile out;
     try {
         switch (format) {
-        case PatchFormat::Bpt: out.model = detail::parse_bpt(text, limits); break;
-        case PatchFormat::QuakeMap: out.model = detail::parse_quake_map(text, limits); break;
+        case PatchFormat::Bpt:
+            out.model = detail::parse_bpt(text, limits);
+            break;
+        case PatchFormat::QuakeMap:
+            out.model = detail::parse_quake_map(text, limits);
+            break;
         case PatchFormat::Json:
             out.model = detail::parse_patch_json(text, limits, out.camera);
             break;
@@ -32,9 +36,12 @@ PatchFile read_patch_file(const std::string& path, const PatchLimits& limits) {
     const std::string ext = fs::path(path).extension().string();
     PatchFile out;
     PatchFormat format;
-    if (ext == ".bpt") format = PatchFormat::Bpt;
-    else if (ext == ".map") format = PatchFormat::QuakeMap;
-    else if (ext == ".json") format = PatchFormat::Json;
+    if (ext == ".bpt")
+        format = PatchFormat::Bpt;
+    else if (ext == ".map")
+        format = PatchFormat::QuakeMap;
+    else if (ext == ".json")
+        format = PatchFormat::Json;
     else {
         out.error = path + ": unknown patch format '" + ext + "' (expected .bpt, .map or .json)";
         return out;

@@ -30,8 +30,7 @@ inline bool normal_is_degenerate(Vec3 n, double size) {
 // With the derivatives at (u, v) and the control net's size already at hand
 // (the tessellators have both).
 template <class Patch>
-Vec3 patch_normal(const Patch& patch, double u, double v, const PatchDerivatives& d,
-                  double size) {
+Vec3 patch_normal(const Patch& patch, double u, double v, const PatchDerivatives& d, double size) {
     Vec3 n = d.du.cross(d.dv);
     if (!detail::normal_is_degenerate(n, size)) return n.normalized();
     if (d.du.length_sq() <= d.dv.length_sq())

@@ -6,9 +6,12 @@ namespace {
 
 template <int M, int N>
 AnyPatch square(const BezierPatch<M, N>& p) {
-    if constexpr (M < N) return square(elevate_u(p));
-    else if constexpr (N < M) return square(elevate_v(p));
-    else return AnyPatch{p};
+    if constexpr (M < N)
+        return square(elevate_u(p));
+    else if constexpr (N < M)
+        return square(elevate_v(p));
+    else
+        return AnyPatch{p};
 }
 
 template <int M, int N>

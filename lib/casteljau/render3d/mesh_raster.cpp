@@ -7,9 +7,9 @@ namespace casteljau {
 
 namespace {
 
-constexpr int kGrid = 4;                   // samples a pixel side
-constexpr int kSamples = kGrid * kGrid;    // 16: one 8-bit step is 1/255, 16 levels is plenty
-constexpr int kBand = 16;                  // rows a band: 16 x 16 samples x 20 B x width
+constexpr int kGrid = 4;                // samples a pixel side
+constexpr int kSamples = kGrid * kGrid; // 16: one 8-bit step is 1/255, 16 levels is plenty
+constexpr int kBand = 16;               // rows a band: 16 x 16 samples x 20 B x width
 constexpr float kAmbient = 0.18f, kDiffuse = 0.82f, kSpecular = 0.3f;
 constexpr double kShininess = 48;
 const Rgb kWire{0.05f, 0.05f, 0.08f};
@@ -34,7 +34,9 @@ void MeshRenderer::setup(const Mesh& mesh, const ScreenProjection& view) {
         const Vec3 n = mesh.normals[i];
         verts_[i] = {view.to_camera(mesh.positions[i]),
                      {n.dot(view.right), n.dot(view.down), n.dot(view.forward)},
-                     mesh.st[i], {}, 0};
+                     mesh.st[i],
+                     {},
+                     0};
     }
     tris_.clear();
     for (const auto& t : mesh.triangles) {
@@ -70,8 +72,10 @@ void MeshRenderer::add_triangle(const Vertex (&v)[3], const ScreenProjection& vi
     // d(s, t)/d(pixel) of the affine screen-space map: the filter footprint.
     const Vec2 e1 = t.v[1].px - t.v[0].px, e2 = t.v[2].px - t.v[0].px;
     const Vec2 s1 = t.v[1].st - t.v[0].st, s2 = t.v[2].st - t.v[0].st;
-    const double dsdx = (s1.x * e2.y - s2.x * e1.y) / area, dsdy = (s2.x * e1.x - s1.x * e2.x) / area;
-    const double dtdx = (s1.y * e2.y - s2.y * e1.y) / area, dtdy = (s2.y * e1.x - s1.y * e2.x) / area;
+    const double dsdx = (s1.x * e2.y - s2.x * e1.y) / area,
+                 dsdy = (s2.x * e1.x - s1.x * e2.x) / area;
+    const double dtdx = (s1.y * e2.y - s2.y * e1.y) / area,
+                 dtdy = (s2.y * e1.x - s1.y * e2.x) / area;
     t.footprint = {std::abs(dsdx) + std::abs(dsdy), std::abs(dtdx) + std::abs(dtdy)};
     tris_.push_back(t);
 }
@@ -101,7 +105,8 @@ void MeshRenderer::draw_band(int y0, int y1, int width, const MeshStyle& style, 
             for (int s = 0; s < kSamples; ++s) {
                 if (depth_[base + s] == 0) continue;
                 ++covered;
-                sum.r += color_[base + s].r, sum.g += color_[base + s].g, sum.b += color_[base + s].b;
+                sum.r += color_[base + s].r, sum.g += color_[base + s].g,
+                    sum.b += color_[base + s].b;
             }
             if (covered == 0) continue;
             const float a = float(covered) / kSamples, inv = 1.0f / covered;
@@ -118,7 +123,8 @@ void MeshRenderer::draw_triangle(const ScreenTriangle& t, int y0, int y1, int wi
     const double area = edge(a, b, c), inv_area = 1 / area;
     const int xa = std::max(0, int(std::floor(std::min({a.x, b.x, c.x}))));
     const int xb = std::min(width - 1, int(std::floor(std::max({a.x, b.x, c.x}))));
-    const int ya = std::max(y0, int(std::floor(t.y0))), yb = std::min(y1 - 1, int(std::floor(t.y1)));
+    const int ya = std::max(y0, int(std::floor(t.y0))),
+              yb = std::min(y1 - 1, int(std::floor(t.y1)));
     const double len[3] = {(c - b).length(), (a - c).length(), (b - a).length()};
     const Vec3 light = Vec3{-0.5, -0.7, -1.0}.normalized(); // toward the light, camera space
     for (int y = ya; y <= yb; ++y)
@@ -155,19 +161,19 @@ void MeshRenderer::draw_triangle(const ScreenTriangle& t, int y0, int y1, int wi
             if (n.length_sq() == 0) n = (t.v[1].c - t.v[0].c).cross(t.v[2].c - t.v[0].c);
             n = n.normalized();
             if (n.dot(view) < 0) n = -n;
-            const Rgb albedo = style.texture ? style.texture->at(Point{} + st, t.footprint)
-                                             : style.albedo;
+            const Rgb albedo =
+                style.texture ? style.texture->at(Point{} + st, t.footprint) : style.albedo;
             const float diffuse = kAmbient + kDiffuse * float(std::max(0.0, n.dot(light)));
             const float spec =
-                kSpecular * float(std::pow(std::max(0.0, n.dot((light + view).normalized())),
-                                           kShininess));
+                kSpecular *
+                float(std::pow(std::max(0.0, n.dot((light + view).normalized())), kShininess));
             Rgb color{albedo.r * diffuse + spec, albedo.g * diffuse + spec,
                       albedo.b * diffuse + spec};
             if (style.wireframe) {
                 // Distance in pixels from the centre to the nearest edge.
-                const double d = std::min({std::abs(edge(b, c, p)) / len[0],
-                                           std::abs(edge(c, a, p)) / len[1],
-                                           std::abs(edge(a, b, p)) / len[2]});
+                const double d =
+                    std::min({std::abs(edge(b, c, p)) / len[0], std::abs(edge(c, a, p)) / len[1],
+                              std::abs(edge(a, b, p)) / len[2]});
                 const float k = float(std::clamp(1.0 - d, 0.0, 1.0));
                 color = {color.r + k * (kWire.r - color.r), color.g + k * (kWire.g - color.g),
                          color.b + k * (kWire.b - color.b)};

@@ -44,15 +44,15 @@ class MeshRenderer {
                 Canvas& canvas);
 
     struct ScreenVertex {
-        Vec3 c;     // camera space
-        Vec3 n;     // camera-space normal
+        Vec3 c; // camera space
+        Vec3 n; // camera-space normal
         Point st;
-        Point px;   // pixel position
-        double w;   // 1 / depth
+        Point px; // pixel position
+        double w; // 1 / depth
     };
     struct ScreenTriangle {
         ScreenVertex v[3];
-        double y0, y1; // rows covered
+        double y0, y1;  // rows covered
         Vec2 footprint; // (s, t) extent of one pixel
     };
 

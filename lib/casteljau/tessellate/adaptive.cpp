@@ -34,7 +34,8 @@ class LineVertices {
         }
     }
     // The parameters strictly between a and b (patch orientation), in order from a to b.
-    void between(LineRef l, std::uint32_t a, std::uint32_t b, std::vector<std::uint32_t>& out) const {
+    void between(LineRef l, std::uint32_t a, std::uint32_t b,
+                 std::vector<std::uint32_t>& out) const {
         out.clear();
         const auto it = lines_.find(l.key);
         if (it == lines_.end()) return;
@@ -139,8 +140,8 @@ class PieceTriangulator {
         const std::uint32_t patch = grid_.patch_index();
         if (ring_.size() == 4) {
             const auto& p = mesh_.positions;
-            const bool d02 = distance(p[ring_[0].v], p[ring_[2].v]) <=
-                             distance(p[ring_[1].v], p[ring_[3].v]);
+            const bool d02 =
+                distance(p[ring_[0].v], p[ring_[2].v]) <= distance(p[ring_[1].v], p[ring_[3].v]);
             const int t[2][3] = {{0, 1, d02 ? 2 : 3}, {d02 ? 0 : 1, 2, 3}};
             for (const auto& tri : t)
                 a_.triangle({ring_[tri[0]].v, ring_[tri[1]].v, ring_[tri[2]].v},
@@ -194,9 +195,9 @@ void tessellate_adaptive(const PatchModel& model, const ScreenProjection& view, 
         std::visit(
             [&](const auto& patch) {
                 const GridVertices grid(assembler, patch, index);
-                lines[index] = {index,
-                                {grid.edge(kBottom), grid.edge(kRight), grid.edge(kTop),
-                                 grid.edge(kLeft)}};
+                lines[index] = {
+                    index,
+                    {grid.edge(kBottom), grid.edge(kRight), grid.edge(kTop), grid.edge(kLeft)}};
                 subdivide(patch, lines[index], view, tolerance, registry, leaves);
             },
             model.patches[index]);

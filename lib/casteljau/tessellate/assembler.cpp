@@ -30,8 +30,8 @@ EdgeRef MeshAssembler::edge(std::span<const PatchPoint> curve) {
         break;
     }
     if (reversed) std::reverse(e.p.begin(), e.p.begin() + e.count);
-    e.collapsed = std::all_of(e.p.begin(), e.p.begin() + e.count,
-                              [&](Point3 q) { return q == e.p[0]; });
+    e.collapsed =
+        std::all_of(e.p.begin(), e.p.begin() + e.count, [&](Point3 q) { return q == e.p[0]; });
     std::array<double, 13> key{};
     key[0] = e.count;
     for (std::uint32_t i = 0; i < e.count; ++i) {

@@ -38,9 +38,9 @@ double measure_max_error_px(const PatchModel& model, const Mesh& mesh,
                         const double b0 = double(i) / kOrder, b1 = double(j) / kOrder,
                                      b2 = 1.0 - b0 - b1;
                         const Vec3 x = b0 * c[0] + b1 * c[1] + b2 * c[2];
-                        const Point uv = Point{} + (b0 * src.uv[0].to_vec() +
-                                                    b1 * src.uv[1].to_vec() +
-                                                    b2 * src.uv[2].to_vec());
+                        const Point uv =
+                            Point{} + (b0 * src.uv[0].to_vec() + b1 * src.uv[1].to_vec() +
+                                       b2 * src.uv[2].to_vec());
                         const Vec3 s = view.to_camera(patch.eval(uv.x, uv.y).p);
                         if (s.z < view.near) continue;
                         worst = std::max(worst, distance(view.to_pixels(x), view.to_pixels(s)));

@@ -40,10 +40,14 @@ class GridVertices {
         const double u = double(i) / double(nu), v = double(j) / double(nv);
         const PatchDerivatives d = patch_.derivatives(u, v);
         Point3 p = d.point.p;
-        if (j == 0) p = a_.edge_point(edges_[kBottom], i, nu);
-        else if (j == nv) p = a_.edge_point(edges_[kTop], i, nu);
-        else if (i == 0) p = a_.edge_point(edges_[kLeft], j, nv);
-        else if (i == nu) p = a_.edge_point(edges_[kRight], j, nv);
+        if (j == 0)
+            p = a_.edge_point(edges_[kBottom], i, nu);
+        else if (j == nv)
+            p = a_.edge_point(edges_[kTop], i, nu);
+        else if (i == 0)
+            p = a_.edge_point(edges_[kLeft], j, nv);
+        else if (i == nu)
+            p = a_.edge_point(edges_[kRight], j, nv);
         return it->second = a_.vertex(p, patch_normal(patch_, u, v, d, size_), d.point.st);
     }
 

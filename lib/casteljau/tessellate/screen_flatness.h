@@ -38,9 +38,9 @@
 namespace casteljau {
 
 struct ScreenFlatness {
-    double bound = 0;  // px, as above
-    double u_bend = 0; // px: how far the rows bend away from their chords
-    double v_bend = 0; // px: the same for the columns
+    double bound = 0;                // px, as above
+    double u_bend = 0;               // px: how far the rows bend away from their chords
+    double v_bend = 0;               // px: the same for the columns
     double u_width = 0, v_width = 0; // px: extent along u and along v
     bool visible = true;
 };
@@ -76,9 +76,8 @@ ScreenFlatness screen_flatness(const Patch& piece, const ScreenProjection& s) {
             py_lo = std::min(py_lo, d.y), py_hi = std::max(py_hi, d.y);
         }
     const double f = s.focal;
-    if (zmin >= s.near &&
-        (s.center.x + f * px_hi < 0 || s.center.x + f * px_lo > s.width ||
-         s.center.y + f * py_hi < 0 || s.center.y + f * py_lo > s.height)) {
+    if (zmin >= s.near && (s.center.x + f * px_hi < 0 || s.center.x + f * px_lo > s.width ||
+                           s.center.y + f * py_hi < 0 || s.center.y + f * py_lo > s.height)) {
         out.visible = false;
         return out;
     }

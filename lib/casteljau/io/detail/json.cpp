@@ -41,13 +41,20 @@ class Parser {
         const char c = peek();
         JsonValue v;
         v.line = line_;
-        if (c == '{') object(v, depth);
-        else if (c == '[') array(v, depth);
-        else if (c == '"') v.kind = JsonValue::Kind::String, v.string = string();
-        else if (literal("true")) v.kind = JsonValue::Kind::Bool, v.boolean = true;
-        else if (literal("false")) v.kind = JsonValue::Kind::Bool;
-        else if (literal("null")) v.kind = JsonValue::Kind::Null;
-        else v.kind = JsonValue::Kind::Number, v.number = number();
+        if (c == '{')
+            object(v, depth);
+        else if (c == '[')
+            array(v, depth);
+        else if (c == '"')
+            v.kind = JsonValue::Kind::String, v.string = string();
+        else if (literal("true"))
+            v.kind = JsonValue::Kind::Bool, v.boolean = true;
+        else if (literal("false"))
+            v.kind = JsonValue::Kind::Bool;
+        else if (literal("null"))
+            v.kind = JsonValue::Kind::Null;
+        else
+            v.kind = JsonValue::Kind::Number, v.number = number();
         return v;
     }
 

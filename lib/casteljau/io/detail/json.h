@@ -20,8 +20,8 @@ struct JsonValue {
     bool boolean = false;
     double number = 0;
     std::string string;
-    std::vector<JsonValue> items;                            // Array
-    std::vector<std::pair<std::string, JsonValue>> members;  // Object, in file order
+    std::vector<JsonValue> items;                           // Array
+    std::vector<std::pair<std::string, JsonValue>> members; // Object, in file order
 
     // The member named `key`, or nullptr.
     const JsonValue* find(std::string_view key) const;

@@ -44,8 +44,8 @@ bool Tokens::next(Token& t) {
         ++pos_;
     } else if (text_[pos_] == '"') {
         const std::size_t close = text_.find('"', pos_ + 1);
-        if (close == std::string_view::npos || text_.substr(pos_, close - pos_).find('\n') !=
-                                                   std::string_view::npos)
+        if (close == std::string_view::npos ||
+            text_.substr(pos_, close - pos_).find('\n') != std::string_view::npos)
             throw ReadError{line_, "unterminated string"};
         pos_ = close + 1;
     } else {
@@ -73,7 +73,8 @@ double Tokens::number(const char* what) {
     const Token t = expect(what);
     double v;
     if (!parse_finite(t.text, v))
-        throw ReadError{t.line, std::string(what) + ": " + quoted(t.text) + " is not a finite number"};
+        throw ReadError{t.line,
+                        std::string(what) + ": " + quoted(t.text) + " is not a finite number"};
     return v;
 }
 
