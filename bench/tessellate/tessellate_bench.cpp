@@ -64,10 +64,7 @@ Setup prepare(PatchModel model) {
     Mesh mesh;
     tessellate_adaptive(s.model, s.view, kTolerance, mesh);
     s.adaptive_error = measure_max_error_px(s.model, mesh, s.view);
-    for (s.steps = 1; s.steps < 1024; ++s.steps) {
-        tessellate_uniform(s.model, s.steps, s.steps, mesh);
-        if (measure_max_error_px(s.model, mesh, s.view) <= s.adaptive_error) break;
-    }
+    s.steps = fewest_uniform_steps(s.model, s.view, s.adaptive_error, 1024, mesh);
     return s;
 }
 

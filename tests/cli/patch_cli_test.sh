@@ -7,18 +7,7 @@
 set -u
 bin="$1"; examples="$2"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-fails=0; passes=0
-pass() { passes=$((passes+1)); }
-fail() { echo "FAIL $*"; fails=$((fails+1)); }
-
-expect() { # name status regex args...
-    local name="$1" want="$2" pattern="$3"; shift 3
-    local out status
-    out="$("$bin" "$@" 2>&1)"; status=$?
-    if [[ $status -ne $want ]]; then fail "$name: exit $status, want $want: $(head -3 <<<"$out")"; return; fi
-    if ! grep -Eq -- "$pattern" <<<"$out"; then fail "$name: output does not match /$pattern/: $(head -3 <<<"$out")"; return; fi
-    pass
-}
+source "$(dirname "$0")/harness.sh"
 # The max_error_px of a stats line is at most the tolerance.
 error_within() { # name stats_json tolerance
     local e; e=$(grep -o '"max_error_px": [0-9.e-]*' <<<"$2" | cut -d' ' -f2)
@@ -64,5 +53,4 @@ expect bad_texture 2 'texture' patch "$examples/patch/wave.bpt" -o "$tmp/x.png" 
 expect bad_view 2 'view' patch "$examples/patch/wave.bpt" -o "$tmp/x.png" --view 10
 expect unwritable 1 'cannot|folder' patch "$examples/patch/wave.bpt" -o "$tmp/nodir/x.png"
 
-echo "patch CLI: $passes passed, $fails failed"
-[[ $fails -eq 0 ]]
+finish "patch CLI"

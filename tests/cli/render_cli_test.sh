@@ -5,18 +5,7 @@
 set -u
 bin="$1"; data="$2"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-fails=0; passes=0
-pass() { passes=$((passes+1)); }
-fail() { echo "FAIL $*"; fails=$((fails+1)); }
-
-expect() { # name status regex args...
-    local name="$1" want="$2" pattern="$3"; shift 3
-    local out status
-    out="$("$bin" "$@" 2>&1)"; status=$?
-    if [[ $status -ne $want ]]; then fail "$name: exit $status, want $want: $(head -3 <<<"$out")"; return; fi
-    if ! grep -Eq -- "$pattern" <<<"$out"; then fail "$name: output does not match /$pattern/: $(head -3 <<<"$out")"; return; fi
-    pass
-}
+source "$(dirname "$0")/harness.sh"
 
 # Formats by extension; sizes from --width/--height/--scale.
 for ext in png tif exr jpg; do
@@ -74,5 +63,4 @@ done
 grep -q 'uniform, equal error' "$tmp/cmp/report.md" && pass || fail "compare: report.md lacks the equal-error row"
 expect compare_bad 2 'nonnumber.svg:2' compare "$data/nonnumber.svg" -o "$tmp/cmp2"
 
-echo "$passes passed, $fails failed"
-[[ $fails -eq 0 ]]
+finish "render CLI"

@@ -52,6 +52,9 @@ TEST(BptReader, MalformedFilesNameTheLine) {
         {"1\n1 1\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n5\n",
          "t.bpt:7: text after the last of the 1 patches"},
         {"x\n", "t.bpt:1: patch count: 'x' is not an integer"},
+        // A few bytes claiming a million patches: an error at the end of the
+        // text, not a million patches' worth of memory reserved up front.
+        {"1000000\n1 1\n0 0 0\n", "t.bpt:4: unexpected end of file, expected x"},
     };
     for (const auto& c : cases) {
         const PatchFile f = bpt(c.text);

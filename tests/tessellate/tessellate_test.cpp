@@ -124,11 +124,12 @@ TEST(AdaptiveTessellation, FewerTrianglesThanUniformAtEqualMeasuredError) {
     Mesh adaptive, uniform;
     tessellate_adaptive(bump, view, 0.25, adaptive);
     const double err = measure_max_error_px(bump, adaptive, view);
-    int steps = 1;
-    for (;; ++steps) {
-        tessellate_uniform(bump, steps, steps, uniform);
-        if (measure_max_error_px(bump, uniform, view) <= err) break;
-    }
+    const int steps = fewest_uniform_steps(bump, view, err, 1024, uniform);
+    // The search's own promise: `steps` meets the error and one step fewer does not.
+    tessellate_uniform(bump, steps - 1, steps - 1, uniform);
+    EXPECT_GT(measure_max_error_px(bump, uniform, view), err);
+    tessellate_uniform(bump, steps, steps, uniform);
+    EXPECT_LE(measure_max_error_px(bump, uniform, view), err);
     EXPECT_LT(2 * adaptive.triangles.size(), uniform.triangles.size())
         << "adaptive " << adaptive.triangles.size() << " uniform " << uniform.triangles.size()
         << " at " << steps << " steps";

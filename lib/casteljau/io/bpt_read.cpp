@@ -9,7 +9,6 @@ PatchModel parse_bpt(std::string_view text, const PatchLimits& limits) {
     Tokens tokens(text);
     PatchModel model;
     const int count = tokens.integer("patch count", 1, int(limits.max_patches));
-    model.patches.reserve(std::size_t(count));
     std::vector<PatchPoint> grid;
     for (int i = 0; i < count; ++i) {
         const int du = tokens.integer("degree m", 1, 3);

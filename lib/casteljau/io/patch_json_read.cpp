@@ -35,7 +35,7 @@ std::vector<double> numbers(const JsonValue& v, std::size_t n, const std::string
     return out;
 }
 
-int positive_int(const JsonValue& v, int lo, int hi, const std::string& what) {
+int integer_in(const JsonValue& v, int lo, int hi, const std::string& what) {
     if (v.kind != Kind::Number || v.number != std::floor(v.number) || v.number < lo ||
         v.number > hi)
         fail(v, what + " must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi));
@@ -72,8 +72,8 @@ void read_patch(const JsonValue& patch, const PatchLimits& limits, PatchModel& m
     if (type == "bezier") {
         const JsonValue& degree = member(patch, "degree", Kind::Array, "an array [m, n]");
         if (degree.items.size() != 2) fail(degree, "\"degree\" must be [m, n]");
-        const int du = positive_int(degree.items[0], 1, 3, "degree m");
-        const int dv = positive_int(degree.items[1], 1, 3, "degree n");
+        const int du = integer_in(degree.items[0], 1, 3, "degree m");
+        const int dv = integer_in(degree.items[1], 1, 3, "degree n");
         check_patch_count(model.patches.size(), 1, limits, patch.line);
         model.patches.push_back(bezier_from_grid(du, dv, grid_points(patch, dv + 1, du + 1)));
     } else if (type == "bspline") {
@@ -81,8 +81,8 @@ void read_patch(const JsonValue& patch, const PatchLimits& limits, PatchModel& m
         if (const JsonValue* size = patch.find("size")) {
             if (size->kind != Kind::Array || size->items.size() != 2)
                 fail(*size, "\"size\" must be [rows, columns]");
-            rows = positive_int(size->items[0], 4, limits.max_grid_side, "rows");
-            cols = positive_int(size->items[1], 4, limits.max_grid_side, "columns");
+            rows = integer_in(size->items[0], 4, limits.max_grid_side, "rows");
+            cols = integer_in(size->items[1], 4, limits.max_grid_side, "columns");
         }
         check_patch_count(model.patches.size(), std::size_t(rows - 3) * (cols - 3), limits,
                           patch.line);

@@ -1,10 +1,9 @@
 #include "casteljau/io/patch_read.h"
 
 #include "casteljau/io/detail/patch_formats.h"
+#include "casteljau/io/text_file.h"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace casteljau {
 
@@ -46,22 +45,13 @@ PatchFile read_patch_file(const std::string& path, const PatchLimits& limits) {
         out.error = path + ": unknown patch format '" + ext + "' (expected .bpt, .map or .json)";
         return out;
     }
-    std::error_code ec;
-    const auto size = fs::file_size(path, ec);
-    std::ifstream in(path, std::ios::binary);
-    if (ec || !in) {
-        out.error = path + ": cannot read the file";
-        out.io_error = true;
+    const TextFile file = read_text_file(path, limits.max_file_bytes);
+    if (!file.error.empty()) {
+        out.error = file.error;
+        out.io_error = file.io_error;
         return out;
     }
-    if (size > limits.max_file_bytes) {
-        out.error = path + ": " + std::to_string(size) + " bytes, more than the limit of " +
-                    std::to_string(limits.max_file_bytes);
-        return out;
-    }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_patches(text.str(), format, path, limits);
+    return parse_patches(file.text, format, path, limits);
 }
 
 } // namespace casteljau

@@ -35,7 +35,7 @@ template <int M, int N>
 struct BezierPatch {
     static constexpr int kDegreeU = M, kDegreeV = N;
     using Row = std::array<PatchPoint, M + 1>;
-    std::array<Row, N + 1> c{};
+    PatchGrid<M + 1, N + 1> c{};
 
     constexpr const PatchPoint& at(int r, int k) const { return c[r][k]; }
     // Corners in the order (u, v) = (0,0), (1,0), (0,1), (1,1).
@@ -59,12 +59,7 @@ struct BezierPatch {
     constexpr PatchPoint eval_matrix(double u, double v) const {
         constexpr BasisMatrix<M> mu = bezier_matrix<M>();
         constexpr BasisMatrix<N> mv = bezier_matrix<N>();
-        const auto wu = basis_weights(mu, u);
-        const auto wv = basis_weights(mv, v);
-        AffineSum sum;
-        for (int r = 0; r <= N; ++r)
-            for (int k = 0; k <= M; ++k) sum.add(wv[r] * wu[k], c[r][k]);
-        return sum.point();
+        return tensor_sum(basis_weights(mv, v), basis_weights(mu, u), c);
     }
 
     constexpr PatchDerivatives derivatives(double u, double v) const {
@@ -120,13 +115,7 @@ struct BezierPatch {
         return out;
     }
 
-    // The smallest box holding the control points, hence the surface.
-    constexpr Box3 control_bounds() const {
-        Box3 b;
-        for (const Row& row : c)
-            for (const PatchPoint& q : row) b.add(q.p);
-        return b;
-    }
+    constexpr Box3 control_bounds() const { return grid_bounds(c); }
 
   private:
     template <class T, std::size_t K>

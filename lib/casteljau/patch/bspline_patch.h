@@ -18,15 +18,10 @@
 namespace casteljau {
 
 struct BSplinePatch {
-    std::array<std::array<PatchPoint, 4>, 4> c{};
+    PatchGrid<4, 4> c{};
 
     constexpr PatchPoint eval_matrix(double u, double v) const {
-        const auto wu = basis_weights(kBSplineMatrix, u);
-        const auto wv = basis_weights(kBSplineMatrix, v);
-        AffineSum sum;
-        for (int r = 0; r < 4; ++r)
-            for (int k = 0; k < 4; ++k) sum.add(wv[r] * wu[k], c[r][k]);
-        return sum.point();
+        return tensor_sum(basis_weights(kBSplineMatrix, v), basis_weights(kBSplineMatrix, u), c);
     }
 
     constexpr CubicPatch to_bezier() const {
@@ -55,12 +50,7 @@ struct BSplinePatch {
     constexpr PatchDerivatives derivatives(double u, double v) const {
         return to_bezier().derivatives(u, v);
     }
-    constexpr Box3 control_bounds() const {
-        Box3 b;
-        for (const auto& row : c)
-            for (const PatchPoint& q : row) b.add(q.p);
-        return b;
-    }
+    constexpr Box3 control_bounds() const { return grid_bounds(c); }
 };
 
 } // namespace casteljau

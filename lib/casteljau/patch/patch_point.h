@@ -9,6 +9,9 @@
 #include "casteljau/geom/point.h"
 #include "casteljau/geom/point3.h"
 
+#include <array>
+#include <cstddef>
+
 namespace casteljau {
 
 struct PatchPoint {
@@ -36,5 +39,28 @@ struct AffineSum {
     }
     constexpr PatchPoint point() const { return {Point3{} + p, Point{} + st}; }
 };
+
+template <std::size_t K, std::size_t R>
+using PatchGrid = std::array<std::array<PatchPoint, K>, R>; // R rows (along v) of K points
+
+// sum_r sum_k wv[r] wu[k] c[r][k]: the point of a tensor-product patch from
+// its basis values in v and in u (the matrix forms' last step).
+template <std::size_t K, std::size_t R>
+constexpr PatchPoint tensor_sum(const std::array<double, R>& wv, const std::array<double, K>& wu,
+                                const PatchGrid<K, R>& c) {
+    AffineSum sum;
+    for (std::size_t r = 0; r < R; ++r)
+        for (std::size_t k = 0; k < K; ++k) sum.add(wv[r] * wu[k], c[r][k]);
+    return sum.point();
+}
+
+// The smallest box holding a control grid, hence its patch (convex hull property).
+template <std::size_t K, std::size_t R>
+constexpr Box3 grid_bounds(const PatchGrid<K, R>& c) {
+    Box3 b;
+    for (const auto& row : c)
+        for (const PatchPoint& q : row) b.add(q.p);
+    return b;
+}
 
 } // namespace casteljau

@@ -117,67 +117,79 @@ void MeshRenderer::draw_band(int y0, int y1, int width, const MeshStyle& style, 
     }
 }
 
+Rgb MeshRenderer::shade(const ScreenTriangle& t, const double (&lambda)[3], double edge_px,
+                        const MeshStyle& style) const {
+    // Perspective-correct weights: screen barycentrics scaled by 1/z, renormalised.
+    double b[3], sum = 0;
+    for (int k = 0; k < 3; ++k) sum += (b[k] = std::max(0.0, lambda[k]) * t.v[k].w);
+    Vec3 n{}, pos{};
+    Vec2 st{};
+    for (int k = 0; k < 3; ++k) {
+        n += (b[k] / sum) * t.v[k].n;
+        pos += (b[k] / sum) * t.v[k].c;
+        st += (b[k] / sum) * t.v[k].st.to_vec();
+    }
+    const Vec3 view = (-pos).normalized();
+    if (n.length_sq() == 0) n = (t.v[1].c - t.v[0].c).cross(t.v[2].c - t.v[0].c);
+    n = n.normalized();
+    if (n.dot(view) < 0) n = -n;
+    const Vec3 light = Vec3{-0.5, -0.7, -1.0}.normalized(); // toward the light, camera space
+    const Rgb albedo = style.texture ? style.texture->at(Point{} + st, t.footprint) : style.albedo;
+    const float diffuse = kAmbient + kDiffuse * float(std::max(0.0, n.dot(light)));
+    const float spec =
+        kSpecular * float(std::pow(std::max(0.0, n.dot((light + view).normalized())), kShininess));
+    Rgb color{albedo.r * diffuse + spec, albedo.g * diffuse + spec, albedo.b * diffuse + spec};
+    if (style.wireframe) {
+        const float k = float(std::clamp(1.0 - edge_px, 0.0, 1.0));
+        color = {color.r + k * (kWire.r - color.r), color.g + k * (kWire.g - color.g),
+                 color.b + k * (kWire.b - color.b)};
+    }
+    return color;
+}
+
 void MeshRenderer::draw_triangle(const ScreenTriangle& t, int y0, int y1, int width,
                                  const MeshStyle& style) {
+    // Barycentrics are affine in the pixel position: lambda_k(p) = l0[k] + g[k] . p,
+    // so each sample is one multiply-add away from its pixel's corner value.
     const Point a = t.v[0].px, b = t.v[1].px, c = t.v[2].px;
     const double area = edge(a, b, c), inv_area = 1 / area;
+    const Point from[3] = {b, c, a}, to[3] = {c, a, b};
+    double l0[3], gx[3], gy[3], px_per_unit[3], offset[3][kSamples];
+    for (int k = 0; k < 3; ++k) {
+        const Vec2 e = to[k] - from[k];
+        gx[k] = -e.y * inv_area, gy[k] = e.x * inv_area;
+        l0[k] = edge(from[k], to[k], {}) * inv_area;
+        px_per_unit[k] = std::abs(area) / e.length(); // lambda 1 is this many px from the edge
+        for (int s = 0; s < kSamples; ++s)
+            offset[k][s] = gx[k] * (s % kGrid + 0.5) / kGrid + gy[k] * (s / kGrid + 0.5) / kGrid;
+    }
     const int xa = std::max(0, int(std::floor(std::min({a.x, b.x, c.x}))));
     const int xb = std::min(width - 1, int(std::floor(std::max({a.x, b.x, c.x}))));
-    const int ya = std::max(y0, int(std::floor(t.y0))),
-              yb = std::min(y1 - 1, int(std::floor(t.y1)));
-    const double len[3] = {(c - b).length(), (a - c).length(), (b - a).length()};
-    const Vec3 light = Vec3{-0.5, -0.7, -1.0}.normalized(); // toward the light, camera space
+    const int ya = std::max(y0, int(std::floor(t.y0)));
+    const int yb = std::min(y1 - 1, int(std::floor(t.y1)));
     for (int y = ya; y <= yb; ++y)
         for (int x = xa; x <= xb; ++x) {
+            double corner[3];
+            for (int k = 0; k < 3; ++k) corner[k] = l0[k] + gx[k] * x + gy[k] * y;
             const std::size_t base = (std::size_t(y - y0) * width + x) * kSamples;
             unsigned mask = 0;
             for (int s = 0; s < kSamples; ++s) {
-                const Point p{x + (s % kGrid + 0.5) / kGrid, y + (s / kGrid + 0.5) / kGrid};
-                const double l0 = edge(b, c, p) * inv_area, l1 = edge(c, a, p) * inv_area,
-                             l2 = edge(a, b, p) * inv_area;
-                if (l0 < 0 || l1 < 0 || l2 < 0) continue;
-                const float w = float(l0 * t.v[0].w + l1 * t.v[1].w + l2 * t.v[2].w);
+                const double s0 = corner[0] + offset[0][s], s1 = corner[1] + offset[1][s],
+                             s2 = corner[2] + offset[2][s];
+                if (s0 < 0 || s1 < 0 || s2 < 0) continue;
+                const float w = float(s0 * t.v[0].w + s1 * t.v[1].w + s2 * t.v[2].w);
                 if (w <= depth_[base + s]) continue;
                 depth_[base + s] = w;
                 mask |= 1u << s;
             }
             if (!mask) continue;
-            // Shade once, at the pixel centre clamped into the triangle.
-            const Point p{x + 0.5, y + 0.5};
-            double l[3] = {std::max(0.0, edge(b, c, p) * inv_area),
-                           std::max(0.0, edge(c, a, p) * inv_area),
-                           std::max(0.0, edge(a, b, p) * inv_area)};
-            double sum = 0;
-            for (int k = 0; k < 3; ++k) sum += (l[k] *= t.v[k].w);
-            Vec3 n{}, pos{};
-            Vec2 st{};
+            // Shade once, at the pixel centre (clamped into the triangle by shade()).
+            double centre[3], edge_px = INFINITY;
             for (int k = 0; k < 3; ++k) {
-                const double bk = l[k] / sum;
-                n += bk * t.v[k].n;
-                pos += bk * t.v[k].c;
-                st += bk * t.v[k].st.to_vec();
+                centre[k] = corner[k] + 0.5 * (gx[k] + gy[k]);
+                edge_px = std::min(edge_px, std::abs(centre[k]) * px_per_unit[k]);
             }
-            const Vec3 view = (-pos).normalized();
-            if (n.length_sq() == 0) n = (t.v[1].c - t.v[0].c).cross(t.v[2].c - t.v[0].c);
-            n = n.normalized();
-            if (n.dot(view) < 0) n = -n;
-            const Rgb albedo =
-                style.texture ? style.texture->at(Point{} + st, t.footprint) : style.albedo;
-            const float diffuse = kAmbient + kDiffuse * float(std::max(0.0, n.dot(light)));
-            const float spec =
-                kSpecular *
-                float(std::pow(std::max(0.0, n.dot((light + view).normalized())), kShininess));
-            Rgb color{albedo.r * diffuse + spec, albedo.g * diffuse + spec,
-                      albedo.b * diffuse + spec};
-            if (style.wireframe) {
-                // Distance in pixels from the centre to the nearest edge.
-                const double d =
-                    std::min({std::abs(edge(b, c, p)) / len[0], std::abs(edge(c, a, p)) / len[1],
-                              std::abs(edge(a, b, p)) / len[2]});
-                const float k = float(std::clamp(1.0 - d, 0.0, 1.0));
-                color = {color.r + k * (kWire.r - color.r), color.g + k * (kWire.g - color.g),
-                         color.b + k * (kWire.b - color.b)};
-            }
+            const Rgb color = shade(t, centre, edge_px, style);
             for (int s = 0; s < kSamples; ++s)
                 if (mask & (1u << s)) color_[base + s] = color;
         }

@@ -61,6 +61,9 @@ class MeshRenderer {
     void add_triangle(const ScreenVertex (&v)[3], const ScreenProjection& view);
     void draw_band(int y0, int y1, int width, const MeshStyle& style, Canvas& canvas);
     void draw_triangle(const ScreenTriangle& t, int y0, int y1, int width, const MeshStyle& style);
+    // The colour at screen barycentrics `lambda`, `edge_px` from the nearest edge.
+    Rgb shade(const ScreenTriangle& t, const double (&lambda)[3], double edge_px,
+              const MeshStyle& style) const;
 
     std::vector<ScreenVertex> verts_;
     std::vector<ScreenTriangle> tris_;

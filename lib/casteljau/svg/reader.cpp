@@ -1,6 +1,7 @@
 #include "casteljau/svg/reader.h"
 
 #include "casteljau/curve/path_data.h"
+#include "casteljau/io/text_file.h"
 #include "casteljau/svg/detail/gradients.h"
 #include "casteljau/svg/shapes.h"
 #include "casteljau/svg/style.h"
@@ -9,8 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
-#include <fstream>
 #include <pugixml.hpp>
 #include <set>
 #include <sstream>
@@ -343,27 +342,14 @@ SvgResult parse_svg(std::string_view text, const std::string& name, const SvgLim
 }
 
 SvgResult read_svg_file(const std::string& path, const SvgLimits& limits) {
-    SvgResult r;
-    std::error_code ec;
-    const auto size = std::filesystem::file_size(path, ec);
-    if (ec) {
-        r.error = path + ": cannot read: " + ec.message();
-        r.io_error = true;
+    const TextFile file = read_text_file(path, limits.max_file_bytes);
+    if (!file.error.empty()) {
+        SvgResult r;
+        r.error = file.error;
+        r.io_error = file.io_error;
         return r;
     }
-    if (size > limits.max_file_bytes) {
-        r.error = path + ": " + std::to_string(size) + " bytes exceed the limit of " +
-                  std::to_string(limits.max_file_bytes);
-        return r;
-    }
-    std::ifstream in(path, std::ios::binary);
-    std::string text(size, '\0');
-    if (!in || !in.read(text.data(), std::streamsize(size))) {
-        r.error = path + ": cannot read the file";
-        r.io_error = true;
-        return r;
-    }
-    return parse_svg(text, path, limits);
+    return parse_svg(file.text, path, limits);
 }
 
 } // namespace casteljau

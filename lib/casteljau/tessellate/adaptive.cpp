@@ -55,7 +55,7 @@ class LineVertices {
 // The lines of one patch: iso-lines inside it, shared edges on its border.
 struct PatchLines {
     std::uint64_t patch;
-    EdgeRef edges[4];
+    std::array<EdgeRef, 4> edges;
 
     LineRef boundary(Side s) const { return {(1ull << 63) | edges[s].id, edges[s].reversed}; }
     LineRef interior(std::uint64_t dir, std::uint32_t at) const {
@@ -194,10 +194,7 @@ void tessellate_adaptive(const PatchModel& model, const ScreenProjection& view, 
     for (std::uint32_t index = 0; index < model.patches.size(); ++index) {
         std::visit(
             [&](const auto& patch) {
-                const GridVertices grid(assembler, patch, index);
-                lines[index] = {
-                    index,
-                    {grid.edge(kBottom), grid.edge(kRight), grid.edge(kTop), grid.edge(kLeft)}};
+                lines[index] = {index, boundary_edges(assembler, patch)};
                 subdivide(patch, lines[index], view, tolerance, registry, leaves);
             },
             model.patches[index]);

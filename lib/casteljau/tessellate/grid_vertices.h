@@ -8,6 +8,7 @@
 #include "casteljau/patch/normal.h"
 #include "casteljau/tessellate/assembler.h"
 
+#include <array>
 #include <cstdint>
 #include <unordered_map>
 
@@ -16,21 +17,20 @@ namespace casteljau {
 // Sides of the (u, v) square, counter-clockwise: v = 0, u = 1, v = 1, u = 0.
 enum Side : int { kBottom = 0, kRight = 1, kTop = 2, kLeft = 3 };
 
+// The shared edges of a patch's four sides, in Side order.
+template <class Patch>
+std::array<EdgeRef, 4> boundary_edges(MeshAssembler& a, const Patch& patch) {
+    return {a.edge(patch.c[0]), a.edge(patch.column(Patch::kDegreeU)), a.edge(patch.c.back()),
+            a.edge(patch.column(0))};
+}
+
 template <class Patch>
 class GridVertices {
   public:
-    static constexpr int M = Patch::kDegreeU, N = Patch::kDegreeV;
-
     GridVertices(MeshAssembler& a, const Patch& patch, std::uint32_t patch_index)
-        : a_(a), patch_(patch), index_(patch_index), size_(patch.control_bounds().diagonal()) {
-        const auto right = patch.column(M), left = patch.column(0);
-        edges_[kBottom] = a.edge(patch.c[0]);
-        edges_[kRight] = a.edge(right);
-        edges_[kTop] = a.edge(patch.c[N]);
-        edges_[kLeft] = a.edge(left);
-    }
+        : a_(a), patch_(patch), index_(patch_index), size_(patch.control_bounds().diagonal()),
+          edges_(boundary_edges(a, patch)) {}
 
-    EdgeRef edge(Side s) const { return edges_[s]; }
     std::uint32_t patch_index() const { return index_; }
 
     std::uint32_t at(std::uint32_t i, std::uint32_t nu, std::uint32_t j, std::uint32_t nv) {
@@ -62,7 +62,7 @@ class GridVertices {
     const Patch& patch_;
     std::uint32_t index_;
     double size_;
-    EdgeRef edges_[4];
+    std::array<EdgeRef, 4> edges_;
     std::unordered_map<std::uint64_t, std::uint32_t> cache_;
 };
 

@@ -1,6 +1,9 @@
 #include "casteljau/tessellate/uniform.h"
 
+#include "casteljau/tessellate/error.h"
 #include "casteljau/tessellate/grid_vertices.h"
+
+#include <algorithm>
 
 namespace casteljau {
 
@@ -28,6 +31,22 @@ void tessellate_uniform(const PatchModel& model, int steps_u, int steps_v, Mesh&
             },
             model.patches[index]);
     }
+}
+
+int fewest_uniform_steps(const PatchModel& model, const ScreenProjection& view, double max_error_px,
+                         int max_steps, Mesh& scratch) {
+    const auto meets = [&](int n) {
+        tessellate_uniform(model, n, n, scratch);
+        return measure_max_error_px(model, scratch, view) <= max_error_px;
+    };
+    int hi = 1;
+    while (hi < max_steps && !meets(hi)) hi = std::min(2 * hi, max_steps);
+    int lo = hi / 2; // fails (or is 0)
+    while (hi - lo > 1) {
+        const int mid = (lo + hi) / 2;
+        (meets(mid) ? hi : lo) = mid;
+    }
+    return hi;
 }
 
 } // namespace casteljau
