@@ -74,11 +74,14 @@ struct StageTimes {
 };
 
 std::string stats_json(const PatchArgs& a, const PatchModel& model, const Mesh& mesh,
-                       const ScreenProjection& view, int steps, const StageTimes& t) {
+                       const ScreenProjection& view, int steps, const AdaptiveStats& adaptive,
+                       const StageTimes& t) {
     return "{\"input\": " + json_string(a.input) + ", \"output\": " + json_string(a.output) +
            ", \"patches\": " + std::to_string(model.patches.size()) +
            ", \"tessellate\": " + json_string(a.adaptive ? "adaptive" : "uniform") +
            ", \"steps\": " + std::to_string(steps) +
+           ", \"pieces\": " + std::to_string(adaptive.pieces) +
+           ", \"budget_reached\": " + (adaptive.budget_reached ? "true" : "false") +
            ", \"tolerance_px\": " + json_number(a.tolerance) +
            ", \"triangles\": " + std::to_string(mesh.triangles.size()) +
            ", \"vertices\": " + std::to_string(mesh.positions.size()) +
@@ -122,9 +125,16 @@ int run_patch(const PatchArgs& a) {
     if (!a.adaptive && steps == 0)
         steps = fewest_uniform_steps(model, view, a.tolerance, std::max(1, step_cap), mesh);
     const auto t1 = Clock::now();
-    if (a.adaptive)
-        tessellate_adaptive(model, view, a.tolerance, mesh);
-    else
+    AdaptiveStats adaptive;
+    if (a.adaptive) {
+        adaptive = tessellate_adaptive(model, view, a.tolerance, mesh);
+        if (adaptive.budget_reached)
+            std::fprintf(stderr,
+                         "warning: %s: adaptive tessellation stopped at its budget of %zu pieces "
+                         "(%zu per pixel, at most 2^20); parts of the mesh may be off by more "
+                         "than the tolerance (is the camera inside the model?)\n",
+                         a.input.c_str(), default_piece_budget(view), kMaxPiecesPerPixel);
+    } else
         tessellate_uniform(model, steps, steps, mesh);
     times.tessellate = ms(Clock::now() - t1);
 
@@ -145,7 +155,7 @@ int run_patch(const PatchArgs& a) {
             return fail(kExitFailure, err);
     times.total = ms(Clock::now() - t0);
     if (a.stats.empty()) return kExitOk;
-    const std::string json = stats_json(a, model, mesh, view, steps, times);
+    const std::string json = stats_json(a, model, mesh, view, steps, adaptive, times);
     if (a.stats == "-")
         std::fputs(json.c_str(), stdout);
     else if (!(std::ofstream(a.stats) << json))

@@ -14,7 +14,7 @@ error_within() { # name stats_json tolerance
     awk -v e="$e" -v t="$3" 'BEGIN { exit !(e != "" && e <= t) }' && pass || fail "$1: max_error_px $e > $3"
 }
 
-fields='"patches": [0-9]+, "tessellate": "(adaptive|uniform)", "steps": [0-9]+, "tolerance_px": [0-9.e-]+, "triangles": [0-9]+, "vertices": [0-9]+, "max_error_px": [0-9.e-]+, "parse_ms": [0-9.e-]+, "tessellate_ms": [0-9.e-]+, "raster_ms": [0-9.e-]+, "encode_ms": [0-9.e-]+, "total_ms": [0-9.e-]+, "width": 320, "height": 240'
+fields='"patches": [0-9]+, "tessellate": "(adaptive|uniform)", "steps": [0-9]+, "pieces": [0-9]+, "budget_reached": false, "tolerance_px": [0-9.e-]+, "triangles": [0-9]+, "vertices": [0-9]+, "max_error_px": [0-9.e-]+, "parse_ms": [0-9.e-]+, "tessellate_ms": [0-9.e-]+, "raster_ms": [0-9.e-]+, "encode_ms": [0-9.e-]+, "total_ms": [0-9.e-]+, "width": 320, "height": 240'
 for f in arch.map pipe.map wave.bpt terrain.json; do
     for tol in 0.25 0.1; do
         expect "$f@$tol" 0 "$fields" patch "$examples/patch/$f" -o "$tmp/$f.png" --width 320 --height 240 --tolerance $tol --stats -

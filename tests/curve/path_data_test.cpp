@@ -1,5 +1,6 @@
 #include "casteljau/curve/path_data.h"
 
+#include <cmath>
 #include <gtest/gtest.h>
 
 namespace casteljau {
@@ -75,6 +76,18 @@ struct BadCase {
     std::size_t segments_kept;
 };
 
+// Checks the error and what was kept; returns the kept path's control bounds.
+Rect expect_error(const BadCase& c) {
+    const PathDataResult r = parse_path_data(c.data);
+    EXPECT_TRUE(r.error) << c.data;
+    if (!r.error) return {};
+    EXPECT_EQ(r.error->offset, c.offset) << c.data << ": " << r.error->message;
+    EXPECT_NE(r.error->message.find(c.message_part), std::string::npos)
+        << c.data << ": " << r.error->message;
+    EXPECT_EQ(r.path.segment_count(), c.segments_kept) << c.data;
+    return r.path.empty() ? Rect{} : r.path.control_bounds();
+}
+
 TEST(PathData, MalformedDataReportsOffsetAndKeepsWhatCameBefore) {
     const BadCase cases[] = {
         {"L10 10", 0, "moveto", 0},
@@ -87,14 +100,35 @@ TEST(PathData, MalformedDataReportsOffsetAndKeepsWhatCameBefore) {
         {"M0 0 L.e5 1", 6, "expected a number", 0},
         {"M0 0 L10 10,", 12, "after ','", 1},
     };
+    for (const BadCase& c : cases) expect_error(c);
+}
+
+// Found by fuzz_path_data (tests/fuzz/regressions/path_data): each number
+// is finite, their sum is not. Every way of adding coordinates is covered.
+TEST(PathData, RelativeSumOverflowingToInfinityIsAnError) {
+    const BadCase cases[] = {
+        {"M 1e308 1e308 l 1e308 0", 16, "overflow", 0},
+        {"M1e308 0 h1e308", 10, "overflow", 0},
+        {"M0 -1e308 L0 0 v-1e308 v -1e308", 25, "overflow", 2},
+        {"M0 0 C0 0 -1e308 0 1e308 0 S 0 0 0 0", 29, "overflow", 1},
+        {"M0 0 Q-1e308 0 1e308 0 T 0 0", 25, "overflow", 1},
+        {"m1e308 0 1e308 0", 9, "overflow", 0},
+        {"M0 0 A1e308 1e308 0 0 1 1e308 0", 6, "double range", 0},
+    };
     for (const BadCase& c : cases) {
-        const PathDataResult r = parse_path_data(c.data);
-        ASSERT_TRUE(r.error) << c.data;
-        EXPECT_EQ(r.error->offset, c.offset) << c.data << ": " << r.error->message;
-        EXPECT_NE(r.error->message.find(c.message_part), std::string::npos)
-            << c.data << ": " << r.error->message;
-        EXPECT_EQ(r.path.segment_count(), c.segments_kept) << c.data;
+        const Rect kept = expect_error(c);
+        EXPECT_TRUE(std::isfinite(kept.x0) && std::isfinite(kept.x1)) << c.data;
     }
+}
+
+// Radii whose squares underflow to zero once gave Lambda = 0/0 and an arc
+// of 1e-300 radius; F.6.6 scales them up to the half circle on the chord.
+TEST(PathData, TinyArcRadiiScaleUpToAHalfCircle) {
+    const Path p = parse_ok("M0 0 A1e-300 1e-300 0 0 1 1 0");
+    ASSERT_GT(p.segment_count(), 0u);
+    for (double u = 0; u <= double(p.segment_count()); u += 0.125)
+        EXPECT_NEAR(distance(p.eval(0, u), Point(0.5, 0)), 0.5, 1e-12) << "u = " << u;
+    EXPECT_NEAR(p.bounds().y0, -0.5, 1e-12); // sweep 1 from (0,0) to (1,0) runs through y < 0
 }
 
 TEST(PathData, UnderflowIsZeroNotAnError) {

@@ -9,6 +9,7 @@
 #include "check.h"
 #include "corpus.h"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <numbers>
@@ -172,6 +173,46 @@ TEST(Stroker, DashesFollowThePatternAlongTheArcLength) {
     out.clear();
     stroke_outline(arc, s, 0.001, out);
     EXPECT_EQ(out.size(), 1u);
+}
+
+// fuzz_svg_render found a dashed cubic 12.9M px long, of which a 96 px
+// image shows a little, taking over 2 s: every dash was built. Now dashes out
+// of reach of the visible box are not: those left are the ones of the whole
+// stroke that come near the box, and their count follows the visible length.
+TEST(Stroker, DashesOutOfReachOfTheVisibleBoxAreNotBuilt) {
+    StrokeGeometry s = style(10, LineCap::Round);
+    s.dashes = {20, 8, 4, 8};
+    const Rect visible{0, 0, 96, 96};
+    const double reach = 5 * std::sqrt(2.0) + 0.25;
+    const auto near_box = [&](const Polygon& p) {
+        Rect b = Rect::empty();
+        for (Point q : p) b = b.united(q);
+        return b.intersects(visible.inflated(reach - 0.25));
+    };
+    for (const char* d : {"M-50000 40 L50000 60", "M-3e4 -3e4 C 9e4 40 -9e4 60 3e4 3e4",
+                          "M50 20 C 190 1288888 250 26 -290 -160"}) {
+        const Path path = parse(d);
+        std::vector<Polygon> all, seen;
+        stroke_outline(path, s, 0.25, all);
+        stroke_outline(path, s, 0.25, seen, visible);
+        std::size_t expected = 0;
+        for (const Polygon& p : all) {
+            if (!near_box(p)) continue;
+            ++expected;
+            // The same dash, up to the rounding of skipping whole periods.
+            const auto same = [&](const Polygon& q) {
+                if (q.size() != p.size()) return false;
+                for (std::size_t i = 0; i < p.size(); ++i)
+                    if (distance(p[i], q[i]) > 1e-6) return false;
+                return true;
+            };
+            EXPECT_TRUE(std::any_of(seen.begin(), seen.end(), same))
+                << d << ": a visible dash starting at " << p.front().x << "," << p.front().y
+                << " is missing";
+        }
+        EXPECT_GT(expected, 0u) << d;
+        EXPECT_LE(seen.size(), expected + 2) << d << ": " << all.size() << " dashes in all";
+    }
 }
 
 TEST(Stroker, ZeroLengthSubpaths) {

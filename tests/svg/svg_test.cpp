@@ -27,7 +27,10 @@ TEST(Color, NamesHexAndRgb) {
     EXPECT_EQ(parse_color("#FF8000"), (Rgba{1, 128 / 255.0f, 0, 1}));
     EXPECT_EQ(parse_color(" rgb(255, 0, 128) "), (Rgba{1, 0, 128 / 255.0f, 1}));
     EXPECT_EQ(parse_color("rgb(100%, 50%, 300%)"), (Rgba{1, 0.5f, 1, 1}));
-    for (const char* bad : {"", "#12", "#ggg", "rgb(1,2)", "rgb(1,2,3", "notacolor", "rgb(1 2 3)"})
+    // "#2a2fb05.5": longer than six digits overflowed the digit buffer
+    // (fuzz_svg_read, tests/fuzz/regressions/svg_read).
+    for (const char* bad : {"", "#12", "#ggg", "rgb(1,2)", "rgb(1,2,3", "notacolor", "rgb(1 2 3)",
+                            "#2a2fb05.5", "#1234567", "#12345678901234567890"})
         EXPECT_FALSE(parse_color(bad)) << bad;
 }
 

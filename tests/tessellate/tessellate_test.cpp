@@ -77,6 +77,31 @@ TEST(AdaptiveTessellation, ClosedSphereIsWatertightAcrossPatchesAndPoles) {
     }
 }
 
+// fuzz_patch_render found a B-spline grid reaching through the camera, which
+// projects to unbounded size: refined to the depth cap, it took minutes. The
+// piece budget stops it, and what it leaves is still watertight.
+TEST(AdaptiveTessellation, PieceBudgetBoundsTheWorkAndKeepsTheMeshWatertight) {
+    const PatchModel sphere = test::sphere_model();
+    const ScreenProjection view = view_of(sphere, kCases[0]);
+    Mesh full;
+    const AdaptiveStats unlimited = tessellate_adaptive(sphere, view, 0.1, full);
+    EXPECT_FALSE(unlimited.budget_reached);
+    ASSERT_GT(unlimited.pieces, 200u);
+    for (const std::size_t budget : {std::size_t(1), std::size_t(37), unlimited.pieces / 3}) {
+        Mesh mesh;
+        const AdaptiveStats st = tessellate_adaptive(sphere, view, 0.1, budget, mesh);
+        EXPECT_TRUE(st.budget_reached) << budget;
+        // Each patch keeps at least one piece; a split in flight adds one more.
+        EXPECT_LE(st.pieces, budget + 2 * sphere.patches.size()) << budget;
+        EXPECT_LT(mesh.triangles.size(), full.triangles.size()) << budget;
+        const test::Topology topo = test::mesh_topology(mesh);
+        EXPECT_EQ(topo.boundary_edges, 0u) << budget;
+        EXPECT_EQ(topo.overused_edges, 0u) << budget;
+    }
+    EXPECT_EQ(default_piece_budget(view),
+              std::min(kMaxPieces, 16 * std::size_t(view.width) * std::size_t(view.height)));
+}
+
 TEST(AdaptiveTessellation, OpenModelsHaveNoTJunctions) {
     for (const Case& c : kCases) {
         const PatchModel model = c.model();

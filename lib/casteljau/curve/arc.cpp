@@ -40,18 +40,20 @@ EllipseArc svg_arc(const SvgArcInput& in) {
     // F.6.5 step 1: the midpoint-relative start point in the ellipse's frame.
     const Vec2 h = (in.from - in.to) * 0.5;
     const Vec2 p{cs * h.x + sn * h.y, -sn * h.x + cs * h.y};
-    // F.6.6: scale the radii up until the ellipse reaches both end points.
-    const double lambda = (p.x * p.x) / (rx * rx) + (p.y * p.y) / (ry * ry);
-    if (lambda > 1.0) {
-        const double s = std::sqrt(lambda);
-        rx *= s;
-        ry *= s;
+    // F.6.6: scale the radii up until the ellipse reaches both end points,
+    // by sqrt(Lambda), Lambda = (x1'/rx)^2 + (y1'/ry)^2. Taken as a hypotenuse
+    // of ratios so that radii far larger or smaller than the end points'
+    // distance neither overflow nor underflow (1e-300 radii squared are 0).
+    const double root_lambda = std::hypot(p.x / rx, p.y / ry);
+    if (root_lambda > 1.0) {
+        rx *= root_lambda;
+        ry *= root_lambda;
     }
-    // F.6.5 step 2: the centre in that frame. The radicand is >= 0 after the
-    // correction up to rounding, which the clamp absorbs.
-    const double rx2 = rx * rx, ry2 = ry * ry;
-    const double den = rx2 * p.y * p.y + ry2 * p.x * p.x;
-    double coef = std::sqrt(std::max(0.0, (rx2 * ry2 - den) / den));
+    // F.6.5 step 2: the centre in that frame. Its coefficient
+    //   sqrt((rx^2 ry^2 - rx^2 y1'^2 - ry^2 x1'^2) / (rx^2 y1'^2 + ry^2 x1'^2))
+    // is, divided through by rx^2 ry^2, sqrt(1 / Lambda - 1): zero once the
+    // radii were scaled up (the centre is the chord's midpoint).
+    double coef = root_lambda >= 1.0 ? 0.0 : std::sqrt(1.0 / (root_lambda * root_lambda) - 1.0);
     if (in.large_arc == in.sweep) coef = -coef;
     const Vec2 c{coef * rx * p.y / ry, -coef * ry * p.x / rx};
     // Step 3: back to user space.

@@ -1,5 +1,8 @@
 #include "casteljau/curve/path_data.h"
 
+#include "casteljau/curve/arc.h"
+
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -119,9 +122,36 @@ class Parser {
 
     bool point(bool relative, Point& out) {
         double x, y;
+        skip_comma_wsp();
+        const std::size_t at = pos_;
         if (!number(x) || !number(y)) return false;
         out = relative ? path_.current_point() + Vec2{x, y} : Point{x, y};
-        return true;
+        return finite(at, out);
+    }
+
+    // Relative coordinates, H/V steps and S/T reflections add numbers that
+    // are each finite but may sum past the double range: that is an error at
+    // `at`, never an infinity in the path.
+    bool finite(std::size_t at, Point p) {
+        if (std::isfinite(p.x) && std::isfinite(p.y)) return true;
+        fail_at(at, "coordinates overflow the double range");
+        return false;
+    }
+
+    // The arc's centre form (arc.h), checked before Path::arc_to builds its
+    // conics: with radii near the double range, or so small that their
+    // squares vanish, it is not representable. The conics' control points lie
+    // within sqrt(2) radii of the centre (a 90-degree piece's middle control
+    // point is at r / cos 45deg), so 2 radii beyond it must stay finite.
+    bool representable_arc(std::size_t at, const SvgArcInput& in) {
+        const EllipseArc a = svg_arc(in);
+        if (a.kind != EllipseArc::Kind::Arc) return true;
+        const double reach = 2 * std::max(a.radii.x, a.radii.y);
+        const bool ok = std::isfinite(a.theta1) && std::isfinite(a.dtheta) &&
+                        std::isfinite(std::fabs(a.center.x) + reach) &&
+                        std::isfinite(std::fabs(a.center.y) + reach);
+        if (!ok) fail_at(at, "the arc's ellipse is outside the double range");
+        return ok;
     }
 
     // One command letter and all its (implicitly repeated) argument groups.
@@ -143,6 +173,8 @@ class Parser {
     }
 
     bool segment(char up, bool rel, bool first) {
+        skip_comma_wsp();
+        const std::size_t at = pos_; // where this argument group begins
         const Point cur = path_.current_point();
         Point p, c1, c2;
         double v;
@@ -158,11 +190,15 @@ class Parser {
             break;
         case 'H':
             if (!number(v)) return false;
-            path_.line_to({rel ? cur.x + v : v, cur.y});
+            p = {rel ? cur.x + v : v, cur.y};
+            if (!finite(at, p)) return false;
+            path_.line_to(p);
             break;
         case 'V':
             if (!number(v)) return false;
-            path_.line_to({cur.x, rel ? cur.y + v : v});
+            p = {cur.x, rel ? cur.y + v : v};
+            if (!finite(at, p)) return false;
+            path_.line_to(p);
             break;
         case 'C':
             if (!point(rel, c1) || !point(rel, c2) || !point(rel, p)) return false;
@@ -172,6 +208,7 @@ class Parser {
         case 'S':
             if (!point(rel, c2) || !point(rel, p)) return false;
             c1 = (last_ == 'C' || last_ == 'S') ? cur + (cur - ctrl_) : cur;
+            if (!finite(at, c1)) return false;
             path_.cubic_to(c1, c2, p);
             ctrl_ = c2;
             break;
@@ -183,6 +220,7 @@ class Parser {
         case 'T':
             if (!point(rel, p)) return false;
             c1 = (last_ == 'Q' || last_ == 'T') ? cur + (cur - ctrl_) : cur;
+            if (!finite(at, c1)) return false;
             path_.quad_to(c1, p);
             ctrl_ = c1;
             break;
@@ -192,6 +230,7 @@ class Parser {
             if (!number(rx) || !number(ry) || !number(rot) || !flag(large) || !flag(sweep) ||
                 !point(rel, p))
                 return false;
+            if (!representable_arc(at, {cur, p, {rx, ry}, rot, large, sweep})) return false;
             path_.arc_to({rx, ry}, rot, large, sweep, p);
             break;
         }

@@ -24,6 +24,12 @@ struct Rect {
         return {inf, inf, -inf, -inf};
     }
 
+    // The whole plane: the identity of an intersection test.
+    static constexpr Rect everything() {
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        return {-inf, -inf, inf, inf};
+    }
+
     constexpr bool is_empty() const { return !(x0 <= x1 && y0 <= y1); }
     constexpr double width() const { return x1 - x0; }
     constexpr double height() const { return y1 - y0; }
@@ -39,6 +45,9 @@ struct Rect {
     constexpr Rect inflated(double by) const { return {x0 - by, y0 - by, x1 + by, y1 + by}; }
     constexpr bool contains(Point p) const {
         return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1;
+    }
+    constexpr bool intersects(const Rect& r) const {
+        return x0 <= r.x1 && r.x0 <= x1 && y0 <= r.y1 && r.y0 <= y1;
     }
     constexpr bool operator==(const Rect&) const = default;
 };

@@ -160,7 +160,13 @@ void Renderer::draw_stroke(const Shape& s, const Affine& m, const PixelRect& cli
     auto t = Clock::now();
     // The device tolerance in user units: divided by the largest stretch.
     polygons_.clear();
-    stroke_outline(s.path, *geometry, options_->flatten.tolerance / m.max_scale(), polygons_);
+    // The target's pixels (its rows within the frame) in user space, one
+    // pixel wider for the antialiased edge: dashes beyond it are not built.
+    const Rect pixels{double(clip.x0 - 1), double(std::max(clip.y0, target.origin_y()) - 1),
+                      double(clip.x1 + 1),
+                      double(std::min(clip.y1, target.origin_y() + target.height()) + 1)};
+    stroke_outline(s.path, *geometry, options_->flatten.tolerance / m.max_scale(), polygons_,
+                   device_box(pixels, m.inverse()));
     edges_.reset(clip, target.origin_y(), target.origin_y() + target.height());
     for (const Polygon& poly : polygons_) {
         for (std::size_t i = 0; i < poly.size(); ++i)

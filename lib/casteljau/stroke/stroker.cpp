@@ -204,34 +204,67 @@ class Outline {
     std::vector<Sample> samples_;
 };
 
-// Dashes beyond this many per path are not drawn: a pattern far finer than a
-// pixel would otherwise cost unbounded time.
+// Dash boundaries walked per path (stroker.h): beyond, dashes are not drawn.
 constexpr std::size_t kMaxDashes = 1 << 20;
 
-// Splits the path into dashes (open subpaths) along its arc length.
-Path dashed(const Path& path, const StrokeGeometry& st, double tol) {
+// A position in the dash pattern: entry k (even: a dash, odd: a gap) with
+// `remaining` of its length left.
+struct DashCursor {
+    const std::vector<double>& pattern; // even length, positive sum
+    double period;
+    std::size_t k = 0;
+    double remaining;
+
+    // Where a subpath starts: the offset, wrapped into [0, period) (negative too).
+    DashCursor(const std::vector<double>& p, double per, double offset)
+        : pattern(p), period(per), remaining(p[0]) {
+        double phase = std::fmod(offset, period);
+        if (phase < 0) phase += period;
+        consume(phase);
+    }
+    bool in_dash() const { return k % 2 == 0; }
+    void next() {
+        k = (k + 1) % pattern.size();
+        remaining = pattern[k];
+    }
+    // Moves `len` along, whole periods at once: O(pattern length) for any length.
+    void skip(double len) {
+        if (len < remaining) return void(remaining -= len);
+        len -= remaining;
+        next();
+        consume(std::fmod(len, period));
+    }
+
+  private:
+    void consume(double len) { // len < period: ends within one turn of the pattern
+        while (len >= remaining) len -= remaining, next();
+        remaining -= len;
+    }
+};
+
+// Splits the path into dashes (open subpaths) along its arc length; dashes
+// that lie outside `keep` are not emitted.
+Path dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& keep) {
     std::vector<double> pattern = st.dashes;
     if (pattern.size() % 2) pattern.insert(pattern.end(), st.dashes.begin(), st.dashes.end());
     double period = 0;
     for (double d : pattern) period += d;
     if (!(period > 0)) return path; // all zero: solid (SVG 1.1, 11.4)
     Path out;
-    std::size_t dashes = 0;
+    std::size_t walked = 0;
+    std::vector<FlatVertex> v;
     for (const Subpath& sp : path.subpaths()) {
-        // Where in the pattern the subpath starts: dash_offset, wrapped (negative too).
-        double phase = std::fmod(st.dash_offset, period);
-        if (phase < 0) phase += period;
-        std::size_t k = 0;
-        while (phase >= pattern[k]) phase -= pattern[k], k = (k + 1) % pattern.size();
-        double remaining = pattern[k] - phase;
-        bool drawing = false; // a dash continues from the previous segment
+        DashCursor dash(pattern, period, st.dash_offset);
+        bool open = false; // the last emitted dash continues into this piece
         const auto emit = [&](const Segment& seg, double ta, double tb) {
             const Segment piece = segment_subsegment(seg, ta, tb);
-            if (!drawing) out.move_to(segment_start(piece)), ++dashes;
+            if (!segment_control_bounds(piece).intersects(keep)) return void(open = false);
+            if (!open) out.move_to(segment_start(piece));
             out.append(piece);
+            open = true;
         };
         for (const Segment& seg : sp.segments) {
-            std::vector<FlatVertex> v{{segment_start(seg), 0.0}};
+            v.assign(1, {segment_start(seg), 0.0});
             std::visit(
                 [&](const auto& c) {
                     flatten_curve(c, FlattenOptions{tol * 1e-3, FlattenMethod::Adaptive, 0},
@@ -239,25 +272,30 @@ Path dashed(const Path& path, const StrokeGeometry& st, double tol) {
                 },
                 seg);
             double t_from = 0;
-            for (std::size_t i = 1; i < v.size() && dashes < kMaxDashes; ++i) {
+            for (std::size_t i = 1; i < v.size() && walked < kMaxDashes; ++i) {
                 const double len = distance(v[i - 1].p, v[i].p);
-                double pos = 0;
-                while (len - pos > remaining &&
-                       dashes < kMaxDashes) { // the pattern changes in this chord
-                    pos += remaining;
-                    const double t = v[i - 1].t + (v[i].t - v[i - 1].t) * (pos / len);
-                    if (k % 2 == 0) emit(seg, t_from, t);
-                    drawing = false;
-                    t_from = t;
-                    k = (k + 1) % pattern.size();
-                    remaining = pattern[k];
+                if (!Rect::from_points(v[i - 1].p, v[i].p).intersects(keep)) {
+                    // Out of reach: its dashes are not drawn, and a dash that
+                    // ran into it ends here (its cap, if any, is out of reach too).
+                    if (dash.in_dash() && t_from < v[i - 1].t) emit(seg, t_from, v[i - 1].t);
+                    open = false;
+                    dash.skip(len);
+                    t_from = v[i].t;
+                    continue;
                 }
-                remaining -= len - pos;
+                double pos = 0;
+                while (len - pos > dash.remaining && walked < kMaxDashes) {
+                    pos += dash.remaining; // the pattern changes in this chord
+                    const double t = v[i - 1].t + (v[i].t - v[i - 1].t) * (pos / len);
+                    if (dash.in_dash()) emit(seg, t_from, t);
+                    open = false;
+                    t_from = t;
+                    dash.next();
+                    ++walked;
+                }
+                dash.remaining -= len - pos;
             }
-            if (k % 2 == 0 && t_from < 1) {
-                emit(seg, t_from, 1.0);
-                drawing = true;
-            }
+            if (dash.in_dash() && t_from < 1) emit(seg, t_from, 1.0);
         }
     }
     return out;
@@ -266,10 +304,12 @@ Path dashed(const Path& path, const StrokeGeometry& st, double tol) {
 } // namespace
 
 void stroke_outline(const Path& path, const StrokeGeometry& style, double tolerance,
-                    std::vector<Polygon>& out) {
+                    std::vector<Polygon>& out, const Rect& visible) {
     const double h = style.width / 2;
     if (!(h > 0) || !(tolerance > 0)) return;
-    const Path source = style.dashes.empty() ? path : dashed(path, style, tolerance);
+    const double reach = h * std::max(style.miter_limit, std::sqrt(2.0)) + tolerance;
+    const Path source =
+        style.dashes.empty() ? path : dashed(path, style, tolerance, visible.inflated(reach));
     Outline outline(h, tolerance, style);
     for (const Subpath& sp : source.subpaths()) outline.subpath(sp, out);
 }

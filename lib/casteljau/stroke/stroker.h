@@ -24,9 +24,19 @@
 // square (square caps) or nothing (butt), as SVG 1.1 implementation notes say.
 // Dashes split each subpath at arc lengths measured on a 1e-3 * tol
 // flattening (its length error is below 1e-6 relative) before stroking.
+//
+// Only what can be seen is built: with a `visible` box, dashes farther from it
+// than the stroke can reach (h times the larger of the miter limit and
+// sqrt 2, plus tol) are left out, and a chord of the measuring flattening
+// that lies that far away advances the pattern in O(pattern length) instead
+// of dash by dash; so a dashed path 1e9 px long that crosses the image costs
+// what its visible part costs. At most kMaxDashes dash boundaries are walked
+// in chords that are kept; beyond that the path's remaining dashes are not
+// drawn, which bounds the time a pattern far finer than a pixel can take.
 #pragma once
 
 #include "casteljau/curve/path.h"
+#include "casteljau/geom/rect.h"
 #include "casteljau/scene/scene.h"
 
 #include <vector>
@@ -36,8 +46,8 @@ namespace casteljau {
 using Polygon = std::vector<Point>;
 
 // Appends the outline polygons of the stroke (in the path's own coordinates)
-// to `out`. `tolerance` (> 0) is in the same coordinates.
+// to `out`. `tolerance` (> 0) and `visible` are in the same coordinates.
 void stroke_outline(const Path& path, const StrokeGeometry& style, double tolerance,
-                    std::vector<Polygon>& out);
+                    std::vector<Polygon>& out, const Rect& visible = Rect::everything());
 
 } // namespace casteljau

@@ -191,14 +191,13 @@ int hex(char c) {
 }
 
 std::optional<Rgba> parse_hex(std::string_view h) {
+    if (h.size() != 3 && h.size() != 6) return std::nullopt;
     int v[6];
     for (std::size_t i = 0; i < h.size(); ++i)
         if ((v[i] = hex(h[i])) < 0) return std::nullopt;
     if (h.size() == 3) return Rgba{v[0] * 17 / 255.0f, v[1] * 17 / 255.0f, v[2] * 17 / 255.0f, 1};
-    if (h.size() == 6)
-        return Rgba{(v[0] * 16 + v[1]) / 255.0f, (v[2] * 16 + v[3]) / 255.0f,
-                    (v[4] * 16 + v[5]) / 255.0f, 1};
-    return std::nullopt;
+    return Rgba{(v[0] * 16 + v[1]) / 255.0f, (v[2] * 16 + v[3]) / 255.0f,
+                (v[4] * 16 + v[5]) / 255.0f, 1};
 }
 
 // rgb(r, g, b): three integers, or three percentages.

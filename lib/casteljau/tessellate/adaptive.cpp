@@ -77,20 +77,26 @@ struct Piece {
     int depth_u, depth_v;
 };
 
-// Pass 1: split one patch into flat pieces; record their corners on their lines.
+// Pass 1: split one patch into flat pieces; record their corners on their
+// lines. Once `leaves` holds `budget` pieces, nothing more is split; returns
+// whether a piece was emitted unchecked for that reason.
 template <class Patch>
-void subdivide(const Patch& patch, const PatchLines& lines, const ScreenProjection& view,
-               double tolerance, LineVertices& registry, std::vector<Leaf>& leaves) {
+bool subdivide(const Patch& patch, const PatchLines& lines, const ScreenProjection& view,
+               double tolerance, std::size_t budget, LineVertices& registry,
+               std::vector<Leaf>& leaves) {
     // Each split pops one piece and pushes two, so the stack never holds more
     // than one piece per level of the deepest path, plus one.
     Piece<Patch> stack[2 * kMaxPatchDepth + 1];
     int top = 0;
     stack[top++] = {patch, {0, kGrid, 0, kGrid}, 0, 0};
+    bool cut_short = false;
     while (top > 0) {
         const Piece<Patch> piece = stack[--top];
-        const ScreenFlatness f = screen_flatness(piece.p, view);
+        const bool spent = leaves.size() + std::size_t(top) >= budget;
+        cut_short = cut_short || spent;
+        const ScreenFlatness f = spent ? ScreenFlatness{} : screen_flatness(piece.p, view);
         const bool can_u = piece.depth_u < kMaxPatchDepth, can_v = piece.depth_v < kMaxPatchDepth;
-        if (!f.visible || f.bound <= tolerance || (!can_u && !can_v)) {
+        if (spent || !f.visible || f.bound <= tolerance || (!can_u && !can_v)) {
             const Leaf& l = piece.at;
             leaves.push_back(l);
             for (const std::uint32_t i : {l.u0, l.u1})
@@ -117,6 +123,7 @@ void subdivide(const Patch& patch, const PatchLines& lines, const ScreenProjecti
             stack[top++] = {halves[0], {l.u0, l.u1, l.v0, m}, piece.depth_u, piece.depth_v + 1};
         }
     }
+    return cut_short;
 }
 
 // Pass 2: triangulate one piece through every vertex on its sides.
@@ -183,19 +190,34 @@ class PieceTriangulator {
 
 } // namespace
 
-void tessellate_adaptive(const PatchModel& model, const ScreenProjection& view, double tolerance,
-                         Mesh& out) {
+std::size_t default_piece_budget(const ScreenProjection& view) {
+    const std::size_t pixels = std::size_t(view.width) * std::size_t(view.height);
+    return std::min(kMaxPieces, kMaxPiecesPerPixel * pixels);
+}
+
+AdaptiveStats tessellate_adaptive(const PatchModel& model, const ScreenProjection& view,
+                                  double tolerance, Mesh& out) {
+    return tessellate_adaptive(model, view, tolerance, default_piece_budget(view), out);
+}
+
+AdaptiveStats tessellate_adaptive(const PatchModel& model, const ScreenProjection& view,
+                                  double tolerance, std::size_t piece_budget, Mesh& out) {
     out.clear();
     MeshAssembler assembler(out);
     LineVertices registry;
     std::vector<PatchLines> lines(model.patches.size());
     std::vector<Leaf> leaves;
     std::vector<std::size_t> first_leaf(model.patches.size() + 1, 0);
+    bool reached = false;
     for (std::uint32_t index = 0; index < model.patches.size(); ++index) {
         std::visit(
             [&](const auto& patch) {
                 lines[index] = {index, boundary_edges(assembler, patch)};
-                subdivide(patch, lines[index], view, tolerance, registry, leaves);
+                // Every patch keeps at least one piece of the budget.
+                const std::size_t budget = std::max(leaves.size() + 1, piece_budget);
+                reached =
+                    subdivide(patch, lines[index], view, tolerance, budget, registry, leaves) ||
+                    reached;
             },
             model.patches[index]);
         first_leaf[index + 1] = leaves.size();
@@ -210,6 +232,7 @@ void tessellate_adaptive(const PatchModel& model, const ScreenProjection& view, 
             },
             model.patches[index]);
     }
+    return {leaves.size(), reached};
 }
 
 } // namespace casteljau

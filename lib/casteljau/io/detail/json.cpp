@@ -72,7 +72,8 @@ class Parser {
             if (peek() != '"') fail("expected a member name in quotes");
             std::string key = string();
             expect(':');
-            v.members.emplace_back(std::move(key), value(depth + 1));
+            v.keys.push_back(std::move(key));
+            v.items.push_back(value(depth + 1));
             if (peek() == '}') return void(++pos_);
             expect(',');
         }
@@ -136,8 +137,8 @@ class Parser {
 } // namespace
 
 const JsonValue* JsonValue::find(std::string_view key) const {
-    for (const auto& [k, v] : members)
-        if (k == key) return &v;
+    for (std::size_t i = 0; i < keys.size(); ++i)
+        if (keys[i] == key) return &items[i];
     return nullptr;
 }
 

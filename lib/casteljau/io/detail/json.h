@@ -7,7 +7,6 @@
 
 #include <string>
 #include <string_view>
-#include <utility>
 #include <vector>
 
 namespace casteljau::detail {
@@ -20,8 +19,11 @@ struct JsonValue {
     bool boolean = false;
     double number = 0;
     std::string string;
-    std::vector<JsonValue> items;                           // Array
-    std::vector<std::pair<std::string, JsonValue>> members; // Object, in file order
+    // An array's elements, or an object's member values in file order with
+    // their names in `keys` (two vectors, not one of pairs: a pair of an
+    // incomplete type is not allowed, and libc++/clang reject it).
+    std::vector<JsonValue> items;
+    std::vector<std::string> keys;
 
     // The member named `key`, or nullptr.
     const JsonValue* find(std::string_view key) const;

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of tests/fuzz with clang, AddressSanitizer and
+# UndefinedBehaviorSanitizer (build-fuzz/), then runs each for SECONDS
+# (default 60; CI runs a short smoke time, a campaign 600 or more).
+# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]
+#
+# Each run starts from a copy of the seed corpus and the regressions
+# (tests/fuzz/corpus/NAME, regressions/NAME: the checked-in seeds stay small),
+# with the token dictionary for the SVG and path-data targets, and fails on
+# the first finding, which libFuzzer writes to build-fuzz/findings/NAME/. Keep such an input as a
+# regression: tests/fuzz/regressions/NAME/<what-broke>, replayed by ctest.
+# The limits are the ones promised for hostile input: 1 GiB of memory and
+# 2 s per input (ASan's shadow memory is not counted; -malloc_limit_mb is).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-60}"; shift || true
+targets=("$@")
+[[ ${#targets[@]} -gt 0 ]] || targets=(path_data svg_read svg_render patch_read patch_render)
+
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCASTELJAU_FUZZ=ON -DCASTELJAU_BUILD_TESTS=OFF -DCASTELJAU_BUILD_BENCH=OFF >/dev/null
+cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]/#/fuzz_}"
+
+status=0
+for name in "${targets[@]}"; do
+    work="build-fuzz/work/$name" findings="build-fuzz/findings/$name"
+    rm -rf "$work"; mkdir -p "$work" "$findings"
+    cp tests/fuzz/corpus/"$name"/* "$work"/
+    [[ -d tests/fuzz/regressions/$name ]] && cp tests/fuzz/regressions/"$name"/* "$work"/
+    dict=()
+    case "$name" in
+        svg_*) dict=(-dict=tests/fuzz/svg.dict) ;;
+        path_data) dict=(-dict=tests/fuzz/path_data.dict) ;;
+    esac
+    echo "fuzz_$name: ${seconds}s"
+    if ! UBSAN_OPTIONS=print_stacktrace=1 "build-fuzz/tests/fuzz/fuzz_$name" "$work" "${dict[@]}" \
+            -max_total_time="$seconds" -rss_limit_mb=1024 -malloc_limit_mb=1024 -timeout=2 \
+            -artifact_prefix="$findings/" -print_final_stats=1 >"build-fuzz/fuzz_$name.log" 2>&1; then
+        echo "fuzz_$name: FINDING, see build-fuzz/fuzz_$name.log and $findings/"
+        tail -n 40 "build-fuzz/fuzz_$name.log"
+        status=1
+    else
+        grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb' "build-fuzz/fuzz_$name.log" | tr '\n' ' '
+        echo
+    fi
+done
+exit "$status"
