@@ -36,8 +36,14 @@ bool check_tolerance(const char* command, double tolerance) {
     return false;
 }
 
-std::optional<Scene> load_svg(const std::string& path, int& status) {
-    SvgResult doc = read_svg_file(path);
+void add_svg_options(CLI::App* cmd, SvgOptions& o) {
+    cmd->add_flag("--partial-path-data", o.partial_path_data,
+                  "Draw a path with bad path data up to the error, with a warning (SVG 1.1 "
+                  "appendix F.2, as browsers do), instead of failing");
+}
+
+std::optional<Scene> load_svg(const std::string& path, const SvgOptions& options, int& status) {
+    SvgResult doc = read_svg_file(path, options);
     for (const std::string& w : doc.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
     if (!doc.scene) {
         std::fprintf(stderr, "error: %s\n", doc.error.c_str());

@@ -4,6 +4,7 @@
 
 #include "casteljau/flatten/flatten.h"
 #include "casteljau/scene/scene.h"
+#include "casteljau/svg/reader.h"
 
 #include <CLI/CLI.hpp>
 #include <optional>
@@ -30,8 +31,11 @@ void add_flatten_options(CLI::App* cmd, FlattenOptions& o);
 // returns false (the caller exits with status 2).
 bool check_tolerance(const char* command, double tolerance);
 
+// --partial-path-data, into `o`.
+void add_svg_options(CLI::App* cmd, SvgOptions& o);
+
 // Reads an SVG file and prints its warnings. On failure prints the located
 // error, sets `status` (2 bad input, 1 unreadable file) and returns nothing.
-std::optional<Scene> load_svg(const std::string& path, int& status);
+std::optional<Scene> load_svg(const std::string& path, const SvgOptions& options, int& status);
 
 } // namespace casteljau::cli

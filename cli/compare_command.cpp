@@ -6,6 +6,7 @@
 // segments per curve. Writes each image, a heat map of where the equal-error
 // renderings differ, and report.md: segments, measured maximum error, flatten
 // and raster time per variant, and the ratios against adaptive.
+#include "casteljau/io/atomic_file.h"
 #include "casteljau/io/canvas_write.h"
 #include "casteljau/render/renderer.h"
 #include "casteljau/svg/reader.h"
@@ -17,7 +18,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 namespace casteljau::cli {
@@ -30,6 +30,7 @@ struct CompareArgs {
     std::string input, output;
     double tolerance = 0.25;
     int segments = 0;
+    SvgOptions svg;
 };
 
 struct Variant {
@@ -82,7 +83,7 @@ Canvas heat_map(const Canvas& a, const Canvas& b, double& max_diff, double& mean
 int run_compare(const CompareArgs& a) {
     if (!check_tolerance("compare", a.tolerance)) return kExitBadInput;
     int status = kExitOk;
-    const std::optional<Scene> scene = load_svg(a.input, status);
+    const std::optional<Scene> scene = load_svg(a.input, a.svg, status);
     if (!scene) return status;
     if (scene->width * scene->height > double(1 << 24)) {
         std::fprintf(stderr,
@@ -168,8 +169,8 @@ int run_compare(const CompareArgs& a) {
     md << "Images: `adaptive.png`, `uniform_equal_error.png`"
        << (a.segments > 0 ? ", `uniform_n.png`" : "") << ", `heat_map.png`.\n";
     const fs::path report = fs::path(a.output) / "report.md";
-    if (!(std::ofstream(report) << md.str())) {
-        std::fprintf(stderr, "error: %s: cannot write\n", report.string().c_str());
+    if (const std::string err = write_file_atomic(report, md.str()); !err.empty()) {
+        std::fprintf(stderr, "error: %s\n", err.c_str());
         return kExitFailure;
     }
     std::fputs(md.str().c_str(), stdout);
@@ -188,6 +189,7 @@ Command add_compare_command(CLI::App& app) {
     cmd->add_option("--segments", a->segments,
                     "Also render uniform sampling with N segments per curve")
         ->check(CLI::Range(1, kMaxUniformSegments));
+    add_svg_options(cmd, a->svg);
     return [a] { return run_compare(*a); };
 }
 

@@ -8,6 +8,7 @@
 // mesh and writes the image (and the mesh). The camera is the file's own
 // (.json "camera") unless --view is given; otherwise an orbit view fitted to
 // the model at --view AZ,EL (default 35,25).
+#include "casteljau/io/atomic_file.h"
 #include "casteljau/io/canvas_write.h"
 #include "casteljau/io/mesh_write.h"
 #include "casteljau/io/patch_read.h"
@@ -24,7 +25,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 
 namespace casteljau::cli {
@@ -158,8 +158,8 @@ int run_patch(const PatchArgs& a) {
     const std::string json = stats_json(a, model, mesh, view, steps, adaptive, times);
     if (a.stats == "-")
         std::fputs(json.c_str(), stdout);
-    else if (!(std::ofstream(a.stats) << json))
-        return fail(kExitFailure, "casteljau patch: --stats " + a.stats + ": cannot write");
+    else if (const std::string err = write_file_atomic(a.stats, json); !err.empty())
+        return fail(kExitFailure, "--stats " + err);
     return kExitOk;
 }
 

@@ -6,6 +6,7 @@
 // OUT ending in '/', render into that folder as NAME.png. --stats writes one
 // JSON object per input (one per line), with the stage times as medians over
 // --repeat renders of the already parsed scene.
+#include "casteljau/io/atomic_file.h"
 #include "casteljau/io/canvas_write.h"
 #include "casteljau/render/bands.h"
 #include "casteljau/svg/color.h"
@@ -19,7 +20,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <thread>
@@ -39,6 +39,7 @@ struct RenderArgs {
     std::string output;
     double width = 0, height = 0, scale = 0;
     FlattenOptions flatten;
+    SvgOptions svg;
     bool antialias = true;
     bool linear_light = false;
     std::string background;
@@ -68,7 +69,7 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
                    Premul background, BandRenderer& renderer, Canvas& canvas) {
     Outcome out;
     const auto t0 = Clock::now();
-    const std::optional<Scene> loaded = load_svg(input, out.status);
+    const std::optional<Scene> loaded = load_svg(input, a.svg, out.status);
     if (!loaded) return out;
     const Scene& scene = *loaded;
     const double parse_ms = ms(Clock::now() - t0);
@@ -171,8 +172,8 @@ int run_render(const RenderArgs& a) {
     if (!a.stats.empty() && !stats.empty()) {
         if (a.stats == "-") {
             std::fputs(stats.c_str(), stdout);
-        } else if (!(std::ofstream(a.stats) << stats)) {
-            std::fprintf(stderr, "casteljau render: --stats %s: cannot write\n", a.stats.c_str());
+        } else if (const std::string err = write_file_atomic(a.stats, stats); !err.empty()) {
+            std::fprintf(stderr, "error: --stats %s\n", err.c_str());
             status = std::max(status, kExitFailure);
         }
     }
@@ -197,6 +198,7 @@ Command add_render_command(CLI::App& app) {
     w->excludes(h)->excludes(s);
     h->excludes(s);
     add_flatten_options(cmd, a->flatten);
+    add_svg_options(cmd, a->svg);
     const std::map<std::string, bool> onoff{{"on", true}, {"off", false}};
     cmd->add_option("--antialias", a->antialias,
                     "on (exact-area coverage, default) or off (pixel centres)")

@@ -135,19 +135,39 @@ TEST(SvgGradient, TransformHrefInheritanceAndStops) {
     EXPECT_TRUE(warnings.empty());
 }
 
-TEST(SvgGradient, BadReferencesFallBackWithAWarning) {
+TEST(SvgGradient, MissingReferencesFallBackWithAWarning) {
     std::vector<std::string> warnings;
     const Canvas c = render(R"svg(<svg width="30" height="10">
-        <linearGradient id="a" href="#b"><stop offset="0" stop-color="blue"/></linearGradient>
-        <linearGradient id="b" href="#a"/>
+        <linearGradient id="a" href="#gone"><stop offset="0" stop-color="blue"/></linearGradient>
         <rect width="10" height="10" fill="url(#missing) lime"/>
-        <rect x="10" width="10" height="10" fill="url(#b)"/>
+        <rect x="10" width="10" height="10" fill="url(#a)"/>
         <rect x="20" width="10" height="10" fill="url(#nope)"/></svg>)svg",
                             &warnings);
     EXPECT_EQ(c.row(5)[5].g, 1.0f);  // fallback color
-    EXPECT_EQ(c.row(5)[15].b, 1.0f); // the cycle is cut; b inherits a's stop
+    EXPECT_EQ(c.row(5)[15].b, 1.0f); // a's href names nothing: a is used as it is
     EXPECT_EQ(c.row(5)[25].a, 0.0f); // no gradient, no fallback: none
     EXPECT_GE(warnings.size(), 2u);
+}
+
+TEST(SvgGradient, HrefCyclesAndOverlongChainsAreErrorsAtTheLink) {
+    const SvgResult cycle = parse_svg(R"svg(<svg width="30" height="10">
+        <linearGradient id="a" href="#b"><stop offset="0" stop-color="blue"/></linearGradient>
+        <linearGradient id="b" href="#a"/>
+        <rect width="10" height="10" fill="url(#b)"/></svg>)svg",
+                                      "c.svg");
+    EXPECT_FALSE(cycle.scene);
+    EXPECT_NE(cycle.error.find("c.svg:2: <linearGradient>: href '#b' makes a cycle"),
+              std::string::npos)
+        << cycle.error;
+    std::string chain = "<svg width='1' height='1'>";
+    for (int i = 0; i < 100; ++i)
+        chain += "<linearGradient id='g" + std::to_string(i) + "' href='#g" +
+                 std::to_string(i + 1) + "'/>\n";
+    chain += "<linearGradient id='g100'/><rect width='1' height='1' fill='url(#g0)'/></svg>";
+    const SvgResult long_chain = parse_svg(chain, "l.svg");
+    EXPECT_NE(long_chain.error.find("l.svg:64: <linearGradient>: the href chain is longer than 64"),
+              std::string::npos)
+        << long_chain.error;
 }
 
 // The shader keeps its color table for the gradient it last built: a second

@@ -144,13 +144,24 @@ TEST(Reader, BadInputNamesFileLineAndElement) {
         << notsvg.error;
 }
 
-TEST(Reader, BadPathDataDrawsUpToTheErrorWithAWarning) {
-    const SvgResult r = parse(R"(<path d="M0 0 L10 0 L10 10 L x 5"/>)");
+TEST(Reader, BadPathDataIsAnErrorOrWithPartialPathDataDrawnUpToTheError) {
+    const char* bad[] = {R"(<path d="M0 0 L10 0 L10 10 L x 5"/>)",
+                         R"(<polyline points="0 0 10 0 10 10 x 5"/>)"};
+    const char* where[] = {"t.svg:2: <path>: attribute d: path data: at offset 20",
+                           "t.svg:2: <polyline>: attribute points:"};
+    for (int i = 0; i < 2; ++i) {
+        const SvgResult strict = parse(bad[i]);
+        EXPECT_FALSE(strict.scene);
+        EXPECT_NE(strict.error.find(where[i]), std::string::npos) << strict.error;
+    }
+    SvgOptions partial;
+    partial.partial_path_data = true;
+    const SvgResult r = parse_svg(
+        std::string("<svg width='100' height='100'>\n") + bad[0] + "</svg>", "t.svg", partial);
     ASSERT_TRUE(r.scene) << r.error;
     EXPECT_EQ(first_shape(*r.scene).path.segment_count(), 2u);
     ASSERT_EQ(r.warnings.size(), 1u);
-    EXPECT_NE(r.warnings[0].find("t.svg:2: <path>: path data: at offset 20"), std::string::npos)
-        << r.warnings[0];
+    EXPECT_NE(r.warnings[0].find(where[0]), std::string::npos) << r.warnings[0];
 }
 
 TEST(Reader, UnsupportedElementsAreSkippedWithOneWarningEach) {
@@ -166,7 +177,7 @@ TEST(Reader, LimitsOnNestingAndElementCount) {
     for (int i = 0; i < 300; ++i) deep += "<g>";
     for (int i = 0; i < 300; ++i) deep += "</g>";
     EXPECT_NE(parse(deep).error.find("nested deeper than 256"), std::string::npos);
-    SvgLimits few;
+    SvgOptions few;
     few.max_elements = 10;
     std::string many;
     for (int i = 0; i < 20; ++i) many += "<rect width='1' height='1'/>";
@@ -174,19 +185,38 @@ TEST(Reader, LimitsOnNestingAndElementCount) {
     EXPECT_NE(r.error.find("more than 10 elements"), std::string::npos) << r.error;
 }
 
-TEST(Reader, EntitiesAreNeverExpanded) {
-    // A "billion laughs" bomb and an external entity: no DTD processing, so
-    // neither is expanded; the document parses quickly and stays small.
+TEST(Reader, EntityDeclarationsAreAnErrorAndAPlainDoctypeIsIgnored) {
+    // A "billion laughs" bomb and an external entity: refused at the DOCTYPE,
+    // never expanded (the first would be 10^10 characters).
     std::string bomb = "<?xml version=\"1.0\"?>\n<!DOCTYPE svg [\n<!ENTITY a \"aaaaaaaaaa\">\n";
     for (int i = 1; i < 10; ++i)
         bomb += "<!ENTITY a" + std::to_string(i) + " \"" + std::string(10, '&') + "\">\n";
-    bomb += "<!ENTITY ext SYSTEM \"file:///etc/passwd\">\n]>\n<svg width='10' "
-            "height='10'><title>&a9;&ext;</title></svg>";
-    // Had the entities been expanded, the document would be 10^10 characters
-    // (or name /etc/passwd): it parses, and the title is not kept anyway.
-    const SvgResult r = parse_svg(bomb, "bomb.svg");
-    ASSERT_TRUE(r.scene) << r.error;
-    EXPECT_TRUE(r.scene->root.children.empty());
+    bomb += "]>\n<svg width='10' height='10'><title>&a9;</title></svg>";
+    const std::string external = "<!DOCTYPE svg [<!ENTITY ext SYSTEM \"file:///etc/passwd\">]>\n"
+                                 "<svg width='10' height='10'><title>&ext;</title></svg>";
+    for (const auto& [text, expect] :
+         {std::pair{bomb, "bomb.svg:2: <!DOCTYPE>: entity declarations are not supported"},
+          std::pair{external, "bomb.svg:1: <!DOCTYPE>: entity declarations"}}) {
+        const SvgResult r = parse_svg(text, "bomb.svg");
+        EXPECT_FALSE(r.scene);
+        EXPECT_NE(r.error.find(expect), std::string::npos) << r.error;
+    }
+    const SvgResult plain = parse_svg(
+        "<!DOCTYPE svg PUBLIC \"-//W3C//DTD SVG 1.1//EN\" "
+        "\"http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd\">\n<svg width='10' height='10'/>",
+        "plain.svg");
+    EXPECT_TRUE(plain.scene) << plain.error;
+}
+
+TEST(Reader, AnAttributeOverTheLengthLimitIsAnError) {
+    SvgOptions small;
+    small.max_attribute_bytes = 100;
+    const std::string d(101, 'M');
+    const SvgResult r =
+        parse_svg("<svg width='1' height='1'>\n<path d='" + d + "'/></svg>", "a.svg", small);
+    EXPECT_NE(r.error.find("a.svg:2: <path>: attribute d is 101 bytes, over the limit of 100"),
+              std::string::npos)
+        << r.error;
 }
 
 } // namespace

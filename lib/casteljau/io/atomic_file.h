@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace casteljau {
 
@@ -17,5 +18,10 @@ std::filesystem::path temporary_sibling(const std::filesystem::path& dest);
 // returns the error (the rename's own, if it fails).
 std::string finish_temporary(const std::filesystem::path& tmp, const std::filesystem::path& dest,
                              std::string error);
+
+// Writes `bytes` to `dest` through a temporary sibling. Every write, the
+// flush to the disk (fsync) and the close are checked, since a full disk may
+// only show at the last two; returns "" or "DEST: what failed".
+std::string write_file_atomic(const std::filesystem::path& dest, std::string_view bytes);
 
 } // namespace casteljau

@@ -2,11 +2,13 @@
 
 #include "casteljau/io/atomic_file.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <filesystem>
 #include <memory>
 #include <system_error>
 #include <utility>
+#include <vector>
 
 namespace casteljau {
 
@@ -21,28 +23,41 @@ bool wants_float(const std::string& ext) {
 
 } // namespace
 
+// Encodes with OIIO, either into memory (an I/O proxy) that
+// write_file_atomic then writes with every step checked, or straight into the
+// temporary file. Memory for PNG, JPEG and EXR: their encoders do not all
+// report a failed write (the PNG writer ignores one; libjpeg's default handler
+// exits the process). The file for TIFF: OIIO 2.4's memory proxy produces a
+// TIFF whose directory offset is wrong, and libtiff reports failed writes.
 std::string write_image_atomic(const std::string& path, const ImageView& image) {
     const fs::path dest(path);
     std::error_code ec;
     if (fs::is_directory(dest, ec)) return path + ": is a folder, not a file";
     const std::string ext = dest.extension().string();
-    const fs::path tmp = temporary_sibling(dest);
-    auto out = OIIO::ImageOutput::create(tmp.string());
+    const bool tiff = ext == ".tif" || ext == ".tiff" || ext == ".TIF" || ext == ".TIFF";
+    const fs::path target = tiff ? temporary_sibling(dest) : dest;
+    auto out = OIIO::ImageOutput::create(target.string());
     if (!out) return path + ": no image writer for '" + ext + "' (" + OIIO::geterror() + ")";
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    if (!tiff && !(out->supports("ioproxy") && out->set_ioproxy(&memory)))
+        return path + ": the '" + ext + "' writer cannot encode into memory";
     const OIIO::TypeDesc type = wants_float(ext) ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
     const bool jpeg = ext == ".jpg" || ext == ".jpeg" || ext == ".JPG" || ext == ".JPEG";
     // JPEG has no alpha channel: its three channels are read with a 4-float stride.
     OIIO::ImageSpec spec(image.width, image.height, jpeg ? 3 : 4, type);
     spec.attribute("oiio:ColorSpace", ext == ".exr" || ext == ".EXR" ? "Linear" : "sRGB");
     std::string error;
-    if (!out->open(tmp.string(), spec)) {
+    if (!out->open(target.string(), spec)) {
         error = path + ": cannot write: " + out->geterror();
     } else if (!out->write_image(OIIO::TypeDesc::FLOAT, image.rgba.data(), 4 * sizeof(float))) {
         error = path + ": write failed: " + out->geterror();
     }
     if (!out->close() && error.empty()) error = path + ": write failed: " + out->geterror();
     out.reset();
-    return finish_temporary(tmp, dest, std::move(error));
+    if (tiff) return finish_temporary(target, dest, std::move(error));
+    if (!error.empty()) return error;
+    return write_file_atomic(dest, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
 }
 
 } // namespace casteljau

@@ -109,8 +109,12 @@ double GradientShader::parameter(Point p) const {
 }
 
 Premul GradientShader::at(int x, int y) const {
+    // t is in [0, 1] after spread(), or NaN where the geometry overflows the
+    // double range (end points 1e308 apart, found by fuzz_svg_render): then
+    // the first stop, never an index outside the table.
     const double t = parameter({x + 0.5, y + 0.5});
-    return lut_[std::size_t(std::lround(t * (kGradientLut - 1)))];
+    const double u = t >= 0 ? std::min(t, 1.0) : 0.0;
+    return lut_[std::size_t(std::lround(u * (kGradientLut - 1)))];
 }
 
 } // namespace casteljau

@@ -76,7 +76,8 @@ GradientRef GradientIndex::resolve(const std::string& id) {
 GradientRef GradientIndex::build(pugi::xml_node node) {
     GradientRef r;
     r.where = node;
-    // The href chain, cut at a missing target, a cycle or the length limit.
+    // The href chain: cut at a missing target (a warning); a cycle or a chain
+    // beyond the length limit is malformed (an error at the link's element).
     std::vector<pugi::xml_node> chain{node};
     std::set<const void*> seen{node.internal_object()};
     while (const char* href = href_of(chain.back())) {
@@ -85,10 +86,15 @@ GradientRef GradientIndex::build(pugi::xml_node node) {
             r.warning = std::string("href '") + href + "' names no gradient; ignored";
             break;
         }
-        if (!seen.insert(it->second.internal_object()).second ||
-            int(chain.size()) >= kMaxHrefChain) {
-            r.warning = std::string("href '") + href + "' makes a cycle; the chain is cut there";
-            break;
+        if (!seen.insert(it->second.internal_object()).second) {
+            r.where = chain.back();
+            return r.error = std::string("href '") + href + "' makes a cycle", r;
+        }
+        if (int(chain.size()) >= kMaxHrefChain) {
+            r.where = chain.back();
+            return r.error = "the href chain is longer than " + std::to_string(kMaxHrefChain) +
+                             " links (the limit)",
+                   r;
         }
         chain.push_back(it->second);
     }

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <pugixml.hpp>
 #include <set>
@@ -30,8 +31,8 @@ bool silently_skipped(std::string_view n) {
 
 class Reader {
   public:
-    Reader(std::string_view text, std::string name, const SvgLimits& limits)
-        : text_(text), name_(std::move(name)), limits_(limits) {
+    Reader(std::string_view text, std::string name, const SvgOptions& options)
+        : text_(text), name_(std::move(name)), options_(options) {
         for (std::size_t i = 0; i < text.size(); ++i)
             if (text[i] == '\n') newlines_.push_back(i);
     }
@@ -83,10 +84,17 @@ class Reader {
     Scene read() {
         pugi::xml_document doc;
         const pugi::xml_parse_result res =
-            doc.load_buffer(text_.data(), text_.size(), pugi::parse_default);
+            doc.load_buffer(text_.data(), text_.size(), pugi::parse_default | pugi::parse_doctype);
         if (!res)
             throw Failure{name_ + ":" + std::to_string(line_of(res.offset)) +
                           ": malformed XML: " + res.description()};
+        // pugixml never expands entities nor fetches a DTD; a document that
+        // declares entities is refused rather than read without them
+        // (entity bombs, external entities).
+        for (const pugi::xml_node& n : doc.children())
+            if (n.type() == pugi::node_doctype && std::strstr(n.value(), "<!ENTITY"))
+                throw Failure{name_ + ":" + std::to_string(line_of(n.offset_debug())) +
+                              ": <!DOCTYPE>: entity declarations are not supported"};
         const pugi::xml_node root = doc.document_element();
         if (std::strcmp(root.name(), "svg") != 0)
             throw Failure{name_ + ":" + std::to_string(line_of(root.offset_debug())) +
@@ -140,11 +148,13 @@ class Reader {
         scene.width = side("width", vb[2]);
         scene.height = side("height", vb[3]);
         for (const double d : {scene.width, scene.height}) {
+            char size[32]; // "%g": 1e+308, not its 309 digits
+            std::snprintf(size, sizeof size, "%g", d);
             if (!(d > 0))
-                fail(root, "the document size " + std::to_string(d) + " must be positive");
-            if (d > limits_.max_size)
-                fail(root, "the document size " + std::to_string(d) + " px exceeds the limit of " +
-                               std::to_string(int(limits_.max_size)) + " px");
+                fail(root, std::string("the document size ") + size + " must be positive");
+            if (d > options_.max_size)
+                fail(root, std::string("the document size ") + size + " px exceeds the limit of " +
+                               std::to_string(int(options_.max_size)) + " px");
         }
         vw_ = box ? vb[2] : scene.width;
         vh_ = box ? vb[3] : scene.height;
@@ -186,9 +196,20 @@ class Reader {
         return Affine::translate({tx, ty}) * Affine::scale(s) * Affine::translate({-vb[0], -vb[1]});
     }
 
+    // Bad path data or point list: an error, or (partial_path_data) a warning
+    // and the shape up to the error.
+    void bad_data(const pugi::xml_node& n, const std::string& what) {
+        if (!options_.partial_path_data) fail(n, what);
+        warn(n, what + " (drawn up to there)");
+    }
+
     void apply_attributes(const pugi::xml_node& n, const StyleState& parent, StyleState& style,
                           ElementProps& props) {
         for (const pugi::xml_attribute& a : n.attributes()) {
+            if (const std::size_t len = std::strlen(a.value()); len > options_.max_attribute_bytes)
+                fail(n, std::string("attribute ") + a.name() + " is " + std::to_string(len) +
+                            " bytes, over the limit of " +
+                            std::to_string(options_.max_attribute_bytes) + " bytes");
             if (std::strcmp(a.name(), "style") == 0) continue;
             const std::string e = apply_property(a.name(), a.value(), parent, style, props);
             if (!e.empty()) fail(n, e);
@@ -203,11 +224,11 @@ class Reader {
               Group& out, int depth) {
         for (const pugi::xml_node& n : parent.children()) {
             if (n.type() != pugi::node_element) continue;
-            if (++elements_ > limits_.max_elements)
-                fail(n,
-                     "more than " + std::to_string(limits_.max_elements) + " elements (the limit)");
-            if (depth > limits_.max_depth)
-                fail(n, "elements nested deeper than " + std::to_string(limits_.max_depth) +
+            if (++elements_ > options_.max_elements)
+                fail(n, "more than " + std::to_string(options_.max_elements) +
+                            " elements (the limit)");
+            if (depth > options_.max_depth)
+                fail(n, "elements nested deeper than " + std::to_string(options_.max_depth) +
                             " (the limit)");
             const std::string_view name = n.name();
             if (name.find(':') != name.npos || silently_skipped(name))
@@ -286,8 +307,8 @@ class Reader {
         if (name == "path") {
             PathDataResult r = parse_path_data(n.attribute("d").value());
             if (r.error)
-                warn(n, "path data: at offset " + std::to_string(r.error->offset) + ": " +
-                            r.error->message + " (drawn up to there)");
+                bad_data(n, "attribute d: path data: at offset " + std::to_string(r.error->offset) +
+                                ": " + r.error->message);
             return std::move(r.path);
         }
         // Percentages of the viewport: x against its width, y against its
@@ -314,13 +335,13 @@ class Reader {
             return line_path({length(n, "x1", 0, w), length(n, "y1", 0, h)},
                              {length(n, "x2", 0, w), length(n, "y2", 0, h)});
         PointList pts = parse_point_list(n.attribute("points").value());
-        if (!pts.error.empty()) warn(n, pts.error + " (drawn up to there)");
+        if (!pts.error.empty()) bad_data(n, "attribute points: " + pts.error);
         return poly_path(pts.points, name == "polygon");
     }
 
     std::string_view text_;
     std::string name_;
-    SvgLimits limits_;
+    SvgOptions options_;
     std::vector<std::size_t> newlines_;
     std::vector<std::string> warnings_;
     std::set<std::string> warned_;
@@ -331,25 +352,25 @@ class Reader {
 
 } // namespace
 
-SvgResult parse_svg(std::string_view text, const std::string& name, const SvgLimits& limits) {
-    if (text.size() > limits.max_file_bytes) {
+SvgResult parse_svg(std::string_view text, const std::string& name, const SvgOptions& options) {
+    if (text.size() > options.max_file_bytes) {
         SvgResult r;
         r.error = name + ": " + std::to_string(text.size()) + " bytes exceed the limit of " +
-                  std::to_string(limits.max_file_bytes);
+                  std::to_string(options.max_file_bytes);
         return r;
     }
-    return Reader(text, name, limits).run();
+    return Reader(text, name, options).run();
 }
 
-SvgResult read_svg_file(const std::string& path, const SvgLimits& limits) {
-    const TextFile file = read_text_file(path, limits.max_file_bytes);
+SvgResult read_svg_file(const std::string& path, const SvgOptions& options) {
+    const TextFile file = read_text_file(path, options.max_file_bytes);
     if (!file.error.empty()) {
         SvgResult r;
         r.error = file.error;
         r.io_error = file.io_error;
         return r;
     }
-    return parse_svg(file.text, path, limits);
+    return parse_svg(file.text, path, options);
 }
 
 } // namespace casteljau

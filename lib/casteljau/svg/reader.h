@@ -2,14 +2,17 @@
 //
 // Errors name the file, the line and the element ("in.svg:12: <rect>:
 // attribute width: 'abc' is not a length"); XML errors come from pugixml with
-// their offset turned into a line. Following SVG 1.1 appendix F.2, bad path
-// data draws the path up to the error with a warning; every other malformed
-// value is an error. Unsupported elements are skipped with a warning each.
+// their offset turned into a line. Malformed values are errors, bad path data
+// and point lists included (DESIGN.md: "anything malformed is an error");
+// with `partial_path_data` they follow SVG 1.1 appendix F.2 instead, as
+// browsers do: the path is drawn up to the error, with a warning.
+// Unsupported elements are skipped with a warning each.
 // No DTD is processed, so no entity is ever expanded and no external
-// reference is ever followed (pugixml without parse_doctype).
+// reference is ever followed; a DOCTYPE that declares entities (an expansion
+// bomb, an external entity) is an error, a plain one is ignored.
 //
-// Limits (SvgLimits): file size, element count, nesting depth and document
-// size are checked before the work they bound.
+// Limits (SvgOptions): file size, element count, nesting depth, attribute
+// length and document size are checked before the work they bound.
 #pragma once
 
 #include "casteljau/scene/scene.h"
@@ -22,11 +25,15 @@
 
 namespace casteljau {
 
-struct SvgLimits {
+struct SvgOptions {
     std::size_t max_file_bytes = std::size_t(256) << 20; // 256 MiB
     std::size_t max_elements = 1'000'000;
-    int max_depth = 256;     // element nesting
-    double max_size = 16384; // document width and height, px
+    int max_depth = 256; // element nesting
+    // Any one attribute: 32 MiB holds a million path segments ("L1234.5
+    // 678.9" is 14 bytes, an absolute cubic about 40).
+    std::size_t max_attribute_bytes = std::size_t(32) << 20;
+    double max_size = 16384;        // document width and height, px
+    bool partial_path_data = false; // draw bad path data up to the error (F.2), warning
 };
 
 struct SvgResult {
@@ -36,7 +43,7 @@ struct SvgResult {
     std::vector<std::string> warnings;
 };
 
-SvgResult read_svg_file(const std::string& path, const SvgLimits& limits = {});
-SvgResult parse_svg(std::string_view text, const std::string& name, const SvgLimits& limits = {});
+SvgResult read_svg_file(const std::string& path, const SvgOptions& options = {});
+SvgResult parse_svg(std::string_view text, const std::string& name, const SvgOptions& options = {});
 
 } // namespace casteljau

@@ -4,8 +4,8 @@
 // anywhere in the document. A reference resolves along the href chain
 // (href or xlink:href, SVG 1.1 13.2.2 and 13.2.3): each attribute comes from
 // the first gradient of the chain that has it, the stops from the first that
-// has any. The chain stops at a missing id or a cycle (with a warning), and at
-// kMaxHrefChain links. Stops (13.2.4): offsets are numbers or percentages,
+// has any. The chain stops at a missing id (with a warning); a cycle or more
+// than kMaxHrefChain links is an error. Stops (13.2.4): offsets are numbers or percentages,
 // clamped to [0, 1] and made nondecreasing; stop-color and stop-opacity come
 // from attributes or the style attribute.
 #pragma once

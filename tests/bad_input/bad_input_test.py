@@ -1,0 +1,246 @@
+#!/usr/bin/env python3
+"""Hostile and pathological input through the casteljau CLI (issue 7).
+
+Three promises, one case each:
+* Bad input (the files in this folder, and large ones generated here): exit
+  status 2, a message that names the file and line and what is wrong, nothing
+  written and an existing output untouched; within 2 s and 1 GiB.
+* Pathological but valid input: rendered (status 0) within bounded time and
+  memory (the bounds below, about 5x what was measured on a 2-core machine).
+* Output that cannot be written (a folder, a path under a file, a full disk,
+  simulated with RLIMIT_FSIZE): status 1, the existing file intact, no
+  temporary file left behind.
+
+Time and memory are taken per process (os.wait4). Under the sanitizers
+(MODE 'sanitized') times are allowed 10x and memory is not checked: ASan's
+shadow memory is counted in the resident size.
+
+Usage: bad_input_test.py PATH/TO/casteljau THIS_FOLDER plain|sanitized
+"""
+import os
+import re
+import resource
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+
+BIN, DATA, MODE = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2]), sys.argv[3]
+SLOW = 10.0 if MODE == "sanitized" else 1.0
+GIB = 1 << 30
+HANG_S = 120  # a hang guard, far beyond every bound below
+failures = []
+
+
+def run(args, cwd, preexec=None):
+    """Runs casteljau ARGS; returns (status, stderr, seconds, max RSS bytes)."""
+    with tempfile.TemporaryFile() as err:
+        start = time.monotonic()
+        p = subprocess.Popen([BIN] + args, cwd=cwd, stdout=subprocess.DEVNULL, stderr=err,
+                             preexec_fn=preexec)
+        killer = threading.Timer(HANG_S, p.kill)
+        killer.start()
+        _, status, usage = os.wait4(p.pid, 0)
+        killer.cancel()
+        p.returncode = os.waitstatus_to_exitcode(status)
+        seconds = time.monotonic() - start
+        err.seek(0)
+        return p.returncode, err.read().decode(errors="replace"), seconds, usage.ru_maxrss * 1024
+
+
+def check(name, ok, detail):
+    print(("ok   " if ok else "FAIL ") + name + ("" if ok else ": " + detail))
+    if not ok:
+        failures.append(name)
+
+
+def check_bounds(name, seconds, rss, max_s, max_bytes=GIB):
+    print("     %s: %.2f s, %.0f MiB" % (name, seconds, rss / 2**20))
+    check(name + " time", seconds <= max_s * SLOW, "%.2f s, bound %.1f s" % (seconds, max_s * SLOW))
+    if MODE == "plain":
+        check(name + " memory", rss <= max_bytes, "%.0f MiB, bound %.0f MiB" % (rss / 2**20, max_bytes / 2**20))
+
+
+def precious(path):
+    with open(path, "w") as f:
+        f.write("precious\n")
+
+
+def intact(path):
+    with open(path) as f:
+        return f.read() == "precious\n"
+
+
+def leftovers(folder):
+    return [f for f in os.listdir(folder) if ".tmp-" in f]
+
+
+# --- bad input ---------------------------------------------------------------
+
+# file -> the message after "FILE:LINE: " (a regular expression)
+BAD = {
+    "truncated_xml.svg": r"1: malformed XML",
+    "bad_path_data.svg": r"2: <path>: attribute d: path data: at offset 20: expected a number",
+    "bad_points.svg": r"2: <polygon>: attribute points:",
+    "not_a_number.svg": r"2: <rect>: attribute width: 'abc' is not a finite length",
+    "nan_number.svg": r"2: <circle>: attribute r: 'nan' is not a finite length",
+    "inf_number.svg": r"2: <rect>: attribute width: 'inf' is not a finite length",
+    "overflowing_number.svg": r"2: <rect>: attribute width: '1e309' is not a finite length",
+    "path_1e308_overflow.svg": r"2: <path>: attribute d: .*overflow the double range",
+    "size_1e308.svg": r"1: <svg>: the document size 1e\+308 px exceeds the limit",
+    "zero_size.svg": r"1: <svg>: the document size 0 must be positive",
+    "negative_size.svg": r"1: <svg>: the document size -3 must be positive",
+    "huge_size.svg": r"1: <svg>: the document size 1e\+06 px exceeds the limit",
+    "entity_bomb.svg": r"2: <!DOCTYPE>: entity declarations are not supported",
+    "external_entity.svg": r"2: <!DOCTYPE>: entity declarations are not supported",
+    "gradient_href_cycle.svg": r"2: <linearGradient>: href '#b' makes a cycle",
+    "nested_groups_10k.svg": r"258: <g>: elements nested deeper than 256",
+    "path_attribute_50MB.svg": r"2: <path>: attribute d is 52428800 bytes, over the limit",
+    "bpt_wrong_count.bpt": r"7: unexpected end of file",
+    "bpt_nan.bpt": r"5: y: 'nan' is not a finite number",
+    "bpt_truncated.bpt": r"5: unexpected end of file",
+    "bpt_degree_too_high.bpt": r"2: degree m: 4 is not in 1..3",
+    "map_even_grid.map": r"7: patch grid 4 x 3: both sizes must be odd",
+    "map_wrong_count.map": r"11: expected '\(', found '\)'",
+    "json_wrong_count.json": r"3: \"points\" has 3 points, expected 2 x 2 = 4",
+    "json_inf.json": r"4: '1e999' is not a finite JSON number",
+    "json_deep.json": r"1: nested deeper than 64 levels",
+}
+
+
+def generate_bad(folder):
+    with open(os.path.join(folder, "nested_groups_10k.svg"), "w") as f:
+        f.write('<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10">\n')
+        f.write("<g>\n" * 10000 + '<rect width="1" height="1"/>' + "</g>" * 10000 + "</svg>\n")
+    with open(os.path.join(folder, "path_attribute_50MB.svg"), "w") as f:
+        f.write('<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10">\n<path d="M0 0')
+        f.write(" " * (50 * 2**20 - 4) + '"/>\n</svg>\n')
+
+
+def bad_input(work):
+    generate_bad(work)
+    for name, message in sorted(BAD.items()):
+        src = os.path.join(DATA, name) if os.path.exists(os.path.join(DATA, name)) else os.path.join(work, name)
+        out = os.path.join(work, "out", "kept.png")
+        os.makedirs(os.path.dirname(out), exist_ok=True)
+        precious(out)
+        command = ["patch" if name.endswith((".bpt", ".map", ".json")) else "render", src, "-o", out]
+        status, err, seconds, rss = run(command, work)
+        where = re.escape(os.path.basename(src)) + ":" + message
+        check(name + " status 2", status == 2, "status %d: %s" % (status, err.strip()[-300:]))
+        check(name + " message", re.search(where, err) is not None, "expected /%s/ in %r" % (where, err[-300:]))
+        check(name + " untouched", intact(out) and not leftovers(os.path.dirname(out)),
+              "the output was changed or a temporary file left: %s" % os.listdir(os.path.dirname(out)))
+        check_bounds(name, seconds, rss, 2.0)
+
+
+# --- pathological but valid input -------------------------------------------
+
+SVG = '<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d">\n%s</svg>\n'
+
+
+def generate_valid(folder):
+    def svg(name, w, h, body):
+        with open(os.path.join(folder, name), "w") as f:
+            f.write(SVG % (w, h, body))
+    # 1M segments: a zigzag of lines and cubics across a 1024 px image.
+    steps = []
+    for i in range(250000):
+        steps.append("l4 -60 c1 20 2 40 0 60" if i % 2 else "l-4 60 c-1 -20 -2 -40 0 -60")
+    svg("path_1M_segments.svg", 1024, 1024,
+        '<path d="M10 500 %s" fill="#2a6fb0" stroke="black" stroke-width="0.5"/>\n' % " ".join(steps))
+    svg("control_points_1e9_apart.svg", 200, 200,
+        '<path d="M10 10 C 1e9 -1e9 -1e9 1e9 190 190 Z" fill="#d9582b" stroke="black" stroke-width="3"/>\n'
+        '<path d="M0 100 Q 5e8 1e9 200 100" fill="none" stroke="#3d9a50" stroke-width="2" stroke-dasharray="5 3"/>\n')
+    svg("circle_1e7_px_off_canvas.svg", 512, 512,
+        '<circle cx="5000256" cy="256" r="5000000" fill="#c9a227" stroke="black" stroke-width="4"/>\n'
+        '<circle cx="-4999900" cy="-4999900" r="7071000" fill="none" stroke="#444" stroke-width="2" '
+        'stroke-dasharray="7 5"/>\n')
+    rects = "".join('<rect x="%.2f" y="%.2f" width="0.3" height="0.3" fill="#%06x"/>\n'
+                    % ((i * 7.31) % 1000, (i * 3.17) % 1000, (i * 2654435761) & 0xffffff)
+                    for i in range(100000))
+    svg("subpixel_shapes_100k.svg", 1000, 1000, rects)
+    # A bicubic patch whose first row collapses to one point (the teapot lid's pole).
+    rows = ["0 0 50 0 0 50 0 0 50 0 0 50",
+            "-30 -10 40 -10 -30 40 10 -30 40 30 -10 40",
+            "-50 -20 20 -20 -50 20 20 -50 20 50 -20 20",
+            "-60 -30 0 -30 -60 0 30 -60 0 60 -30 0"]
+    with open(os.path.join(folder, "patch_collapsed_edge.bpt"), "w") as f:
+        f.write("1\n3 3\n")
+        for r in rows:
+            v = r.split()
+            for k in range(0, 12, 3):
+                f.write(" ".join(v[k:k + 3]) + "\n")
+
+
+# file -> (extra arguments, time bound in seconds)
+VALID = {
+    "path_1M_segments.svg": ([], 10.0),
+    "control_points_1e9_apart.svg": ([], 2.0),
+    "circle_1e7_px_off_canvas.svg": ([], 2.0),
+    "subpixel_shapes_100k.svg": ([], 5.0),
+    "patch_collapsed_edge.bpt": (["--width", "320", "--height", "240"], 2.0),
+}
+
+
+def valid_input(work):
+    generate_valid(work)
+    for name, (extra, bound) in sorted(VALID.items()):
+        out = os.path.join(work, name + ".png")
+        command = ["patch" if name.endswith(".bpt") else "render", name, "-o", out] + extra
+        status, err, seconds, rss = run(command, work)
+        check(name + " renders", status == 0 and os.path.getsize(out) > 0, "status %d: %s" % (status, err[-300:]))
+        check_bounds(name, seconds, rss, bound)
+
+
+# --- output that cannot be written --------------------------------------------
+
+def full_disk(room=4096):
+    """A disk that takes files of `room` bytes at most."""
+    def limit():
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)  # a failed write, not a killed process
+        resource.setrlimit(resource.RLIMIT_FSIZE, (room, room))
+    return limit
+
+
+def unwritable_output(work):
+    ok_svg = os.path.join(DATA, "..", "cli", "data", "ok.svg")
+    patch = os.path.join(DATA, "..", "..", "examples", "patch", "wave.bpt")
+    os.makedirs(os.path.join(work, "is_a_folder.png"), exist_ok=True)
+    precious(os.path.join(work, "a_file"))
+    cases = [
+        ("folder", ["render", ok_svg, "-o", "is_a_folder.png"], None, r"is a folder", None),
+        ("under_a_file", ["render", ok_svg, "-o", "a_file/x.png"], None, r"a_file/x.png", None),
+    ]
+    for ext in ["png", "tif", "exr", "jpg"]:
+        cases.append(("full_disk_" + ext, ["render", ok_svg, "-o", "kept." + ext, "--scale", "8"],
+                      full_disk(), r"kept\.%s: write failed" % ext, "kept." + ext))
+    for ext in ["obj", "ply"]:
+        cases.append(("full_disk_mesh_" + ext, ["patch", patch, "-o", "p.png", "--width", "64", "--height", "48",
+                                                "--mesh", "kept." + ext], full_disk(),
+                      r"kept\.%s: write failed" % ext, "kept." + ext))
+    # The 1 x 1 image fits in 300 bytes, the statistics do not.
+    cases.append(("full_disk_stats", ["patch", patch, "-o", "q.png", "--width", "1", "--height", "1",
+                                      "--stats", "kept.json"], full_disk(300), r"kept\.json: write failed",
+                  "kept.json"))
+    for name, command, preexec, message, kept in cases:
+        if kept:
+            precious(os.path.join(work, kept))
+        status, err, _, _ = run(command, work, preexec)
+        check(name + " status 1", status == 1, "status %d: %s" % (status, err[-300:]))
+        check(name + " message", re.search(message, err) is not None, "expected /%s/ in %r" % (message, err[-300:]))
+        if kept:
+            check(name + " intact", intact(os.path.join(work, kept)), "the existing file was changed")
+    check("no temporary files", not leftovers(work), "left: %s" % leftovers(work))
+
+
+with tempfile.TemporaryDirectory() as tmp:
+    for part in (bad_input, valid_input, unwritable_output):
+        folder = os.path.join(tmp, part.__name__)
+        os.makedirs(folder)
+        part(folder)
+
+print("bad input: %d failed" % len(failures) if failures else "bad input: all passed")
+sys.exit(1 if failures else 0)
