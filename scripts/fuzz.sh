@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets of tests/fuzz with clang, AddressSanitizer and
 # UndefinedBehaviorSanitizer (build-fuzz/), then runs each for SECONDS
 # (default 60; CI runs a short smoke time, a campaign 600 or more).
-# Usage: scripts/fuzz.sh [SECONDS] [TARGET...]
+# Usage: [FUZZ_SEED=N] scripts/fuzz.sh [SECONDS] [TARGET...]
 #
 # Each run starts from a copy of the seed corpus and the regressions
 # (tests/fuzz/corpus/NAME, regressions/NAME: the checked-in seeds stay small),
@@ -35,7 +35,7 @@ for name in "${targets[@]}"; do
     echo "fuzz_$name: ${seconds}s"
     if ! UBSAN_OPTIONS=print_stacktrace=1 "build-fuzz/tests/fuzz/fuzz_$name" "$work" "${dict[@]}" \
             -max_total_time="$seconds" -rss_limit_mb=1024 -malloc_limit_mb=1024 -timeout=2 \
-            -artifact_prefix="$findings/" -print_final_stats=1 >"build-fuzz/fuzz_$name.log" 2>&1; then
+            -artifact_prefix="$findings/" -print_final_stats=1 -seed="${FUZZ_SEED:-0}" >"build-fuzz/fuzz_$name.log" 2>&1; then
         echo "fuzz_$name: FINDING, see build-fuzz/fuzz_$name.log and $findings/"
         tail -n 40 "build-fuzz/fuzz_$name.log"
         status=1

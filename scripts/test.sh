@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the dependencies, builds everything with warnings as errors, runs
 # the whole test suite, then builds and runs it again under AddressSanitizer
-# and UndefinedBehaviorSanitizer. Used by CI (.ci/run) and by the README.
+# and UndefinedBehaviorSanitizer, then runs each libFuzzer target for a short
+# smoke time (scripts/fuzz.sh). Used by CI (.ci/run) and by the README.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
@@ -19,3 +20,7 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCASTELJAU_
 cmake --build build-asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-asan -j "$jobs" --output-on-failure -E '^install\.'
+
+# Fuzzing smoke: 30 s per target from the seed corpus, with a fixed seed so
+# that a run is repeatable; campaigns run scripts/fuzz.sh 600 or more.
+FUZZ_SEED=1 bash scripts/fuzz.sh 30
