@@ -6,6 +6,7 @@
 #include "corpus.h"
 #include "coverage.h"
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <numbers>
 
@@ -227,6 +228,44 @@ TEST(PathEdges, CoordinatesUpTo1e9KeepTheShape) {
     const auto ref = testing::supersampled_coverage({{{-1e9, -1e9}, {1e9, 1e9}, {-1e9, 1e9}}},
                                                     FillRule::NonZero, 32, 32);
     EXPECT_LE(compare(img, ref, 32).max, 1.0f / 255);
+}
+
+// The same triangle scaled to 1e308, where b - a of two coordinates
+// overflows: the edges stay finite and the coverage is the 1e9 triangle's
+// (the shape is the same half-planes near the canvas).
+TEST(PathEdges, CoordinatesNear1e308KeepTheShape) {
+    const auto cover = [](const char* d) {
+        const PathDataResult r = parse_path_data(d);
+        EdgeList edges;
+        edges.reset(32, 32);
+        add_path_edges(r.path, Affine::identity(), {}, edges);
+        for (const Edge& e : edges.edges())
+            EXPECT_TRUE(std::isfinite(e.x0) && std::isfinite(e.x1)) << d;
+        testing::CoverageImage img(32, 32);
+        Rasterizer().fill(edges, FillRule::NonZero, true, img);
+        return img;
+    };
+    const auto near = cover("M -1e9 -1e9 L 1e9 1e9 L -1e9 1e9 Z");
+    const auto far = cover("M -1e308 -1e308 L 1e308 1e308 L -1e308 1e308 Z");
+    for (int y = 0; y < 32; ++y)
+        for (int x = 0; x < 32; ++x)
+            EXPECT_NEAR(far.at(x, y), near.at(x, y), 1.0f / 255) << x << "," << y;
+}
+
+// fuzz_svg_render: an arc from (150, 20) to (1, -1e308) has a radius near
+// 5e307; flattening its pieces near the canvas squared coordinates past the
+// double range and never finished. Pieces still huge at the culling depth
+// are chords now: the edge building ends, with few segments, all finite.
+TEST(PathEdges, ArcReaching1e308EndsWithFiniteEdges) {
+    const PathDataResult r =
+        parse_path_data("M150 20 A130 130 0 0 1 1 -1e308 A130 130 0 0 1 150 20 Z");
+    ASSERT_FALSE(r.error) << r.error->message;
+    EdgeList edges;
+    edges.reset(96, 96);
+    const FlattenStats s = add_path_edges(r.path, Affine::scale(0.32), {}, edges);
+    EXPECT_LT(s.segments_out, 10000u);
+    for (const Edge& e : edges.edges())
+        EXPECT_TRUE(std::isfinite(e.x0) && std::isfinite(e.x1) && std::isfinite(e.y0)) << e.x0;
 }
 
 TEST(PathEdges, CurvesLeftOfTheCanvasKeepTheirWinding) {

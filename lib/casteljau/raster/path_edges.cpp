@@ -60,9 +60,13 @@ struct EdgeEmitter {
             }
             const bool inside =
                 box.x0 >= left && box.y0 >= upper && box.x1 <= right && box.y1 <= lower;
-            if (inside || p.depth == kCullDepth ||
-                (box.width() <= small && box.height() <= small)) {
+            if (inside || (box.width() <= small && box.height() <= small)) {
                 flatten(p.c);
+                continue;
+            }
+            if (p.depth == kCullDepth) { // still over 2^40 x 4 canvas sizes: see path_edges.h
+                edges.add_line(p.c.start(), p.c.end());
+                ++stats.segments_out;
                 continue;
             }
             const auto halves = p.c.split(0.5);

@@ -13,7 +13,12 @@
 // * otherwise: flattened with the given options.
 // So a circle of radius 1e7 px mostly off the canvas costs a few dozen splits
 // plus the flattening of the pieces that cross the canvas, and coordinates up
-// to 1e9 px stay exact in double until the clipped edges are stored.
+// to 1e9 px stay exact in double until the clipped edges are stored. Only
+// pieces near the canvas are ever flattened, so the flattener never sees
+// coordinates far beyond it. A piece still larger than 4 canvas sizes after
+// kCullDepth halvings (a curve over 2^40 times the canvas, up to 1e308 px) is
+// drawn as its chord: flattening it would square coordinates past the double
+// range, and no image could show the difference at that scale anyway.
 //
 // Filling closes every subpath (SVG 1.1, 11.3): an open subpath gets the
 // closing line from its last point to its start.

@@ -295,6 +295,7 @@ Path dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
                 }
                 dash.remaining -= len - pos;
             }
+            if (walked >= kMaxDashes) return out; // the rest is not drawn
             if (dash.in_dash() && t_from < 1) emit(seg, t_from, 1.0);
         }
     }
