@@ -1,4 +1,5 @@
 #include "casteljau/geom/affine.h"
+#include "casteljau/geom/line_clip.h"
 #include "casteljau/geom/rect.h"
 #include "corpus.h"
 
@@ -65,6 +66,46 @@ TEST(Rect, StaysOrderedAndEmptyIsTheUnionIdentity) {
     EXPECT_EQ(Rect::empty().united(r), r);
     EXPECT_TRUE(r.contains({2, 3}));
     EXPECT_FALSE(r.contains({1.9, 0}));
+}
+
+// Clipping against brute force: the clipped part holds exactly the sample
+// points of the segment that lie in the box, for random segments around it.
+TEST(LineClip, KeepsExactlyThePartInTheBox) {
+    const Rect box{-10, -5, 30, 25};
+    testing::Rng rng(17);
+    for (int i = 0; i < 2000; ++i) {
+        const Point a{rng.uniform(-60, 80), rng.uniform(-60, 80)};
+        const Point b = i % 7 == 0 ? Point{a.x, rng.uniform(-60, 80)}
+                                   : Point{rng.uniform(-60, 80), rng.uniform(-60, 80)};
+        const auto part = clip_line(a, b, box);
+        for (int k = 0; k <= 200; ++k) {
+            const Point p = lerp(a, b, k / 200.0);
+            const bool in = box.inflated(-1e-9).contains(p);
+            const bool out = !box.inflated(1e-9).contains(p);
+            if (in) {
+                ASSERT_TRUE(part) << "a " << a.x << "," << a.y << " b " << b.x << "," << b.y;
+                EXPECT_LT(distance_to_segment(p, part->front(), part->back()), 1e-9) << i;
+            }
+            if (out && part) {
+                EXPECT_GT(distance_to_segment(p, part->front(), part->back()), 0) << i;
+            }
+        }
+        if (box.contains(a) && part) {
+            EXPECT_EQ(part->front(), a) << "an end inside is kept exactly";
+        }
+    }
+}
+
+// End points near 1e308, where b - a overflows: the crossing of a nearly
+// horizontal line is found at the right height.
+TEST(LineClip, EndPointsNear1e308) {
+    const auto part = clip_line({-1e308, 100}, {1e308, 200}, Rect{0, 0, 300, 300});
+    ASSERT_TRUE(part);
+    EXPECT_EQ(part->front().x, 0);
+    EXPECT_EQ(part->back().x, 300);
+    EXPECT_NEAR(part->front().y, 150, 1e-9);
+    EXPECT_NEAR(part->back().y, 150, 1e-9);
+    EXPECT_FALSE(clip_line({-1e308, -1e308}, {1e308, -1e308}, Rect{0, 0, 300, 300}));
 }
 
 } // namespace

@@ -215,6 +215,38 @@ TEST(Stroker, DashesOutOfReachOfTheVisibleBoxAreNotBuilt) {
     }
 }
 
+// Solid strokes of geometry reaching 1e308 (found by fuzz_svg_render: the
+// stroke of an arc of radius 5e307 sampled the whole arc): only the part near
+// the visible box is built, and a nearly horizontal line from -1e300 to 1e300
+// gives the same outline there as one from -1e9 to 1e9.
+TEST(Stroker, SolidStrokesBuildOnlyTheVisiblePart) {
+    const Rect visible{0, 0, 300, 300};
+    std::vector<Polygon> arc;
+    stroke_outline(parse("M150 20 A130 130 0 0 1 1 -1e308 A130 130 0 0 1 150 20 Z"),
+                   style(3, LineCap::Round), 0.25, arc, visible);
+    std::size_t points = 0;
+    for (const Polygon& p : arc) {
+        points += p.size();
+        for (Point q : p) EXPECT_TRUE(q.is_finite());
+    }
+    EXPECT_LT(points, 10000u);
+    const auto band = [&](const char* d) { // where the outline crosses x = 150
+        std::vector<Polygon> out;
+        stroke_outline(parse(d), style(5), 0.25, out, visible);
+        Rect b = Rect::empty();
+        for (const Polygon& p : out)
+            for (std::size_t i = 0; i < p.size(); ++i) {
+                const Point u = p[i], v = p[(i + 1) % p.size()];
+                if ((u.x < 150) != (v.x < 150)) b = b.united(lerp(u, v, (150 - u.x) / (v.x - u.x)));
+            }
+        return b;
+    };
+    const Rect near = band("M-1e9 100 L1e9 200"), far = band("M-1e300 100 L1e300 200");
+    EXPECT_NEAR(far.y0, near.y0, 1e-5); // the 1e9 line is 7.5e-6 px higher at x = 150
+    EXPECT_NEAR(far.y1, near.y1, 1e-5);
+    EXPECT_NEAR(far.y0, 147.5, 1e-6);
+}
+
 TEST(Stroker, ZeroLengthSubpaths) {
     const Path dot = parse("M50 50 L50 50");
     std::vector<Polygon> round, square, butt;

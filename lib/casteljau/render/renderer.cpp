@@ -1,5 +1,6 @@
 #include "casteljau/render/renderer.h"
 
+#include "casteljau/geom/pixel_index.h"
 #include "casteljau/raster/path_edges.h"
 #include "casteljau/stroke/stroker.h"
 
@@ -96,10 +97,10 @@ void Renderer::in_layer(const Node& n, Canvas& target, int depth, float opacity,
     // antialiasing), clipped to the target.
     const Rect b = node_bounds(n, view_);
     if (b.is_empty()) return;
-    const int x0 = std::max(target.origin_x(), int(std::floor(b.x0)) - 1);
-    const int y0 = std::max(target.origin_y(), int(std::floor(b.y0)) - 1);
-    const int x1 = std::min(target.origin_x() + target.width(), int(std::ceil(b.x1)) + 1);
-    const int y1 = std::min(target.origin_y() + target.height(), int(std::ceil(b.y1)) + 1);
+    const int tx0 = target.origin_x(), tx1 = tx0 + target.width();
+    const int ty0 = target.origin_y(), ty1 = ty0 + target.height();
+    const int x0 = floor_in(b.x0 - 1, tx0, tx1), y0 = floor_in(b.y0 - 1, ty0, ty1);
+    const int x1 = ceil_in(b.x1 + 1, tx0, tx1), y1 = ceil_in(b.y1 + 1, ty0, ty1);
     if (x1 <= x0 || y1 <= y0) return;
     Canvas& l = layer(depth);
     l.reset(x1 - x0, y1 - y0, x0, y0);

@@ -1,5 +1,7 @@
 #include "casteljau/render3d/mesh_raster.h"
 
+#include "casteljau/geom/pixel_index.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -163,10 +165,10 @@ void MeshRenderer::draw_triangle(const ScreenTriangle& t, int y0, int y1, int wi
         for (int s = 0; s < kSamples; ++s)
             offset[k][s] = gx[k] * (s % kGrid + 0.5) / kGrid + gy[k] * (s / kGrid + 0.5) / kGrid;
     }
-    const int xa = std::max(0, int(std::floor(std::min({a.x, b.x, c.x}))));
-    const int xb = std::min(width - 1, int(std::floor(std::max({a.x, b.x, c.x}))));
-    const int ya = std::max(y0, int(std::floor(t.y0)));
-    const int yb = std::min(y1 - 1, int(std::floor(t.y1)));
+    const int xa = floor_in(std::min({a.x, b.x, c.x}), 0, width);
+    const int xb = floor_in(std::max({a.x, b.x, c.x}), -1, width - 1);
+    const int ya = floor_in(t.y0, y0, y1);
+    const int yb = floor_in(t.y1, y0 - 1, y1 - 1);
     for (int y = ya; y <= yb; ++y)
         for (int x = xa; x <= xb; ++x) {
             double corner[3];

@@ -1,6 +1,7 @@
 #include "casteljau/stroke/stroker.h"
 
 #include "casteljau/flatten/flatten.h"
+#include "casteljau/geom/line_clip.h"
 
 #include <algorithm>
 #include <array>
@@ -302,6 +303,68 @@ Path dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
     return out;
 }
 
+// Halvings of a segment far larger than the visible box: as in path_edges.h,
+// 2^-40 of anything that fits in a double near the box is about a box size.
+constexpr int kCullDepth = 40;
+
+// The parts of `path` within `keep`, as open or closed subpaths: a segment
+// whose control box misses `keep` is left out and its subpath is cut there
+// (the cut ends lie out of reach, so their caps cannot show); a line is
+// clipped to `keep`; a curve larger than 4 box sizes is halved until its
+// pieces are small or miss, and a piece still large at kCullDepth is taken
+// as its chord, clipped. So strokes of curves reaching 1e308 cost what their
+// visible part costs, and the outline never measures a length beyond it
+// (whose square would overflow).
+Path visible_part(const Path& path, const Rect& keep) {
+    const double small = 4 * std::max(keep.width(), keep.height());
+    Path out;
+    for (const Subpath& sp : path.subpaths()) {
+        bool open = false, cut = false;
+        const auto keep_piece = [&](const Segment& piece) {
+            if (!open) out.move_to(segment_start(piece));
+            out.append(piece);
+            open = true;
+        };
+        const auto keep_line = [&](Point a, Point b) {
+            const auto part = clip_line(a, b, keep);
+            if (!part) return void(open = false);
+            if (part->front() != a || part->back() != b) cut = true;
+            if (part->front() != a) open = false;
+            keep_piece(Line{{part->front(), part->back()}});
+            if (part->back() != b) open = false;
+        };
+        for (const Segment& seg : sp.segments) {
+            std::visit(
+                [&](const auto& curve) {
+                    using Curve = std::decay_t<decltype(curve)>;
+                    if constexpr (std::is_same_v<Curve, Line>)
+                        return keep_line(curve.start(), curve.end());
+                    std::array<std::pair<Curve, int>, kCullDepth + 1> stack;
+                    int top = 0;
+                    stack[top++] = {curve, 0};
+                    while (top > 0) {
+                        const auto [c, depth] = stack[--top];
+                        const Rect box = c.control_bounds();
+                        if (!box.intersects(keep)) {
+                            open = false, cut = true;
+                        } else if (box.width() <= small && box.height() <= small) {
+                            keep_piece(c);
+                        } else if (depth == kCullDepth) {
+                            keep_line(c.start(), c.end());
+                        } else {
+                            const auto halves = c.split(0.5);
+                            stack[top++] = {halves[1], depth + 1};
+                            stack[top++] = {halves[0], depth + 1};
+                        }
+                    }
+                },
+                seg);
+        }
+        if (sp.closed && !cut) out.close();
+    }
+    return out;
+}
+
 } // namespace
 
 void stroke_outline(const Path& path, const StrokeGeometry& style, double tolerance,
@@ -309,8 +372,9 @@ void stroke_outline(const Path& path, const StrokeGeometry& style, double tolera
     const double h = style.width / 2;
     if (!(h > 0) || !(tolerance > 0)) return;
     const double reach = h * std::max(style.miter_limit, std::sqrt(2.0)) + tolerance;
+    const Rect keep = visible.inflated(reach);
     const Path source =
-        style.dashes.empty() ? path : dashed(path, style, tolerance, visible.inflated(reach));
+        style.dashes.empty() ? visible_part(path, keep) : dashed(path, style, tolerance, keep);
     Outline outline(h, tolerance, style);
     for (const Subpath& sp : source.subpaths()) outline.subpath(sp, out);
 }
