@@ -273,28 +273,41 @@ Path dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
                 },
                 seg);
             double t_from = 0;
+            // Passes `len` out of reach: the dash in progress ends at t_end,
+            // and the next one can only start after it (at t_after).
+            const auto pass = [&](double t_end, double len, double t_after) {
+                if (dash.in_dash() && t_from < t_end) emit(seg, t_from, t_end);
+                open = false;
+                dash.skip(len);
+                t_from = t_after;
+            };
             for (std::size_t i = 1; i < v.size() && walked < kMaxDashes; ++i) {
-                const double len = distance(v[i - 1].p, v[i].p);
-                if (!Rect::from_points(v[i - 1].p, v[i].p).intersects(keep)) {
-                    // Out of reach: its dashes are not drawn, and a dash that
-                    // ran into it ends here (its cap, if any, is out of reach too).
-                    if (dash.in_dash() && t_from < v[i - 1].t) emit(seg, t_from, v[i - 1].t);
-                    open = false;
-                    dash.skip(len);
-                    t_from = v[i].t;
-                    continue;
+                const Point a = v[i - 1].p, b = v[i].p;
+                const double len = distance(a, b);
+                const auto t_at = [&](double pos) {
+                    return pos >= len ? v[i].t : v[i - 1].t + (v[i].t - v[i - 1].t) * (pos / len);
+                };
+                // The stretch [s0, s1] of the chord within reach (clipped when
+                // it leaves the box: a chord of a curve reaching 1e308 is long).
+                double s0 = 0, s1 = len;
+                if (!keep.contains(a) || !keep.contains(b)) {
+                    const auto part = clip_line(a, b, keep);
+                    s0 = part ? distance(a, part->front()) : len;
+                    s1 = part ? distance(a, part->back()) : len;
                 }
-                double pos = 0;
-                while (len - pos > dash.remaining && walked < kMaxDashes) {
+                if (s0 > 0) pass(v[i - 1].t, s0, t_at(s0));
+                double pos = s0;
+                while (s1 - pos > dash.remaining && walked < kMaxDashes) {
                     pos += dash.remaining; // the pattern changes in this chord
-                    const double t = v[i - 1].t + (v[i].t - v[i - 1].t) * (pos / len);
+                    const double t = t_at(pos);
                     if (dash.in_dash()) emit(seg, t_from, t);
                     open = false;
                     t_from = t;
                     dash.next();
                     ++walked;
                 }
-                dash.remaining -= len - pos;
+                dash.remaining -= s1 - pos;
+                if (s1 < len) pass(t_at(s1), len - s1, v[i].t);
             }
             if (walked >= kMaxDashes) return out; // the rest is not drawn
             if (dash.in_dash() && t_from < 1) emit(seg, t_from, 1.0);
