@@ -246,6 +246,21 @@ TEST(Stroker, SolidStrokesBuildOnlyTheVisiblePart) {
     EXPECT_NEAR(far.y0, 147.5, 1e-6);
 }
 
+// fuzz_svg_render: stroke-width 1e22 made the normal-turn step 0 (1 - tol/2h
+// rounds to 1), and a round cap infinitely many points (int(inf), undefined).
+TEST(Stroker, AStroke1e22WideHasBoundedRoundCapsAndJoins) {
+    std::vector<Polygon> out;
+    stroke_outline(parse("M150 200 C 190 120 250 260 290 160 L 300 300"),
+                   style(1e22, LineCap::Round, LineJoin::Round), 0.25, out, Rect{0, 0, 320, 240});
+    std::size_t points = 0;
+    for (const Polygon& p : out) {
+        points += p.size();
+        for (Point q : p) EXPECT_TRUE(q.is_finite());
+    }
+    EXPECT_GT(points, 0u);
+    EXPECT_LT(points, 1u << 20);
+}
+
 TEST(Stroker, ZeroLengthSubpaths) {
     const Path dot = parse("M50 50 L50 50");
     std::vector<Polygon> round, square, butt;

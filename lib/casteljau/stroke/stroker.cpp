@@ -35,11 +35,20 @@ Vec2 tangent(const Segment& s, double t) {
     return segment_deriv(s, std::min(1.0, t + 1e-7)).normalized();
 }
 
+// Points on one round join or cap at most, and so the least normal turn
+// between samples is pi / kMaxArcSteps (below). Only strokes wider than
+// about 1e9 tolerances reach it: their offsets are then coarser than the
+// tolerance, by under 1e-9 of the width, and far off any image.
+constexpr double kMaxArcSteps = 1 << 16;
+
 // (b): the normal may turn by dphi between samples; at least 4 samples per
-// quarter turn keep round joins and tiny widths sensible too.
+// quarter turn keep round joins and tiny widths sensible too. dphi =
+// 2 acos(1 - x), x = tol / 2h, is computed as 4 asin(sqrt(x / 2)), the same
+// angle, which stays positive when x is below the rounding of 1 - x (a
+// stroke 1e22 px wide gave 0: infinitely many samples and arc points).
 double max_normal_turn(double h, double tol) {
-    const double c = std::clamp(1.0 - tol / (2.0 * h), -1.0, 1.0);
-    return std::min(2.0 * std::acos(c), kPi / 8);
+    const double x = std::min(tol / (2.0 * h), 2.0);
+    return std::clamp(4.0 * std::asin(std::sqrt(x / 2.0)), kPi / kMaxArcSteps, kPi / 8);
 }
 
 class Sampler {
@@ -104,7 +113,7 @@ class Outline {
     // Arc of radius h around c from direction u0 to u1, turning `sweep` radians
     // (signed), endpoints excluded.
     void arc(std::vector<Point>& out, Point c, Vec2 u0, double sweep) const {
-        const int n = std::max(1, int(std::ceil(std::fabs(sweep) / dphi_)));
+        const int n = int(std::clamp(std::ceil(std::fabs(sweep) / dphi_), 1.0, kMaxArcSteps));
         const double a0 = std::atan2(u0.y, u0.x);
         for (int i = 1; i < n; ++i) {
             const double a = a0 + sweep * i / n;
