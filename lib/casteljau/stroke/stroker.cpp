@@ -393,7 +393,11 @@ void stroke_outline(const Path& path, const StrokeGeometry& style, double tolera
                     std::vector<Polygon>& out, const Rect& visible) {
     const double h = style.width / 2;
     if (!(h > 0) || !(tolerance > 0)) return;
-    const double reach = h * std::max(style.miter_limit, std::sqrt(2.0)) + tolerance;
+    // How far the outline reaches from the path: a miter up to the limit, a
+    // square cap's corner at sqrt 2 half-widths. Miters are counted up to 1e6
+    // half-widths, so that a limit of 1e308 cannot switch the culling off; a
+    // longer spike from a join out of reach of the image is not drawn.
+    const double reach = h * std::clamp(style.miter_limit, std::sqrt(2.0), 1e6) + tolerance;
     const Rect keep = visible.inflated(reach);
     const Path source =
         style.dashes.empty() ? visible_part(path, keep) : dashed(path, style, tolerance, keep);

@@ -25,14 +25,15 @@
 // Dashes split each subpath at arc lengths measured on a 1e-3 * tol
 // flattening (its length error is below 1e-6 relative) before stroking.
 //
-// Only what can be seen is built: with a `visible` box, dashes farther from it
-// than the stroke can reach (h times the larger of the miter limit and
-// sqrt 2, plus tol) are left out, and a chord of the measuring flattening
-// that lies that far away advances the pattern in O(pattern length) instead
-// of dash by dash; so a dashed path 1e9 px long that crosses the image costs
-// what its visible part costs. At most kMaxDashes dash boundaries are walked
-// in chords that are kept; beyond that the path's remaining dashes are not
-// drawn, which bounds the time a pattern far finer than a pixel can take.
+// Only what can be seen is built. With a `visible` box, the parts of the path
+// farther from it than the stroke can reach (h times the miter limit, at
+// least sqrt 2 and at most 1e6, plus tol) are left out: solid strokes keep
+// the path's segments near the box (lines clipped, curves halved), dashes
+// are walked only along chords within reach, and a chord out of reach
+// advances the pattern in O(pattern length). So a stroke of a path reaching
+// 1e308, or a dashed path 1e9 px long, costs what its visible part costs. At
+// most kMaxDashes dash boundaries are walked; beyond, the path's remaining
+// dashes are not drawn, which bounds a pattern far finer than a pixel.
 #pragma once
 
 #include "casteljau/curve/path.h"
