@@ -37,9 +37,14 @@ Vec2 tangent(const Segment& s, double t) {
 
 // Points on one round join or cap at most, and so the least normal turn
 // between samples is pi / kMaxArcSteps (below). Only strokes wider than
-// about 1e9 tolerances reach it: their offsets are then coarser than the
-// tolerance, by under 1e-9 of the width, and far off any image.
-constexpr double kMaxArcSteps = 1 << 16;
+// about 1.4e7 tolerances reach it (3.5e6 px at 0.25 px): their arcs are then
+// coarser than the tolerance, by 7.4e-8 of the half-width.
+constexpr double kMaxArcSteps = 1 << 12;
+
+// Outline points per stroked path at most (256 MiB): subpaths beyond are not
+// drawn. Only absurd strokes reach it, such as a million dashes with round
+// caps on a stroke millions of pixels wide.
+constexpr std::size_t kMaxOutlinePoints = std::size_t(1) << 24;
 
 // (b): the normal may turn by dphi between samples; at least 4 samples per
 // quarter turn keep round joins and tiny widths sensible too. dphi =
@@ -402,7 +407,13 @@ void stroke_outline(const Path& path, const StrokeGeometry& style, double tolera
     const Path source =
         style.dashes.empty() ? visible_part(path, keep) : dashed(path, style, tolerance, keep);
     Outline outline(h, tolerance, style);
-    for (const Subpath& sp : source.subpaths()) outline.subpath(sp, out);
+    std::size_t points = 0;
+    for (const Subpath& sp : source.subpaths()) {
+        if (points >= kMaxOutlinePoints) break;
+        const std::size_t before = out.size();
+        outline.subpath(sp, out);
+        for (std::size_t i = before; i < out.size(); ++i) points += out[i].size();
+    }
 }
 
 } // namespace casteljau
