@@ -7,8 +7,9 @@
 # Each run starts from a copy of the seed corpus and the regressions
 # (tests/fuzz/corpus/NAME, regressions/NAME: the checked-in seeds stay small),
 # with the token dictionary for the SVG and path-data targets, and fails on
-# the first finding, which libFuzzer writes to build-fuzz/findings/NAME/. Keep such an input as a
-# regression: tests/fuzz/regressions/NAME/<what-broke>, replayed by ctest.
+# the first finding, which libFuzzer writes to build-fuzz/findings/NAME/.
+# Keep such an input as a regression, tests/fuzz/regressions/NAME/ under a
+# name that says what broke: ctest replays it.
 # The limits are the ones promised for hostile input: 1 GiB of memory and
 # 2 s per input for the readers (ASan's shadow memory is not counted;
 # -malloc_limit_mb is). The render targets get 10 s: what parses is valid
