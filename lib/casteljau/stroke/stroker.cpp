@@ -242,8 +242,11 @@ struct DashCursor {
         k = (k + 1) % pattern.size();
         remaining = pattern[k];
     }
-    // Moves `len` along, whole periods at once: O(pattern length) for any length.
+    // Moves `len` along, whole periods at once: O(pattern length) for any
+    // length. An infinite one (a chord between points 1e308 apart, whose
+    // length overflows) leaves the phase as it is rather than make it NaN.
     void skip(double len) {
+        if (!std::isfinite(len)) return;
         if (len < remaining) return void(remaining -= len);
         len -= remaining;
         next();
@@ -302,7 +305,12 @@ Path dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
                     return pos >= len ? v[i].t : v[i - 1].t + (v[i].t - v[i - 1].t) * (pos / len);
                 };
                 // The stretch [s0, s1] of the chord within reach (clipped when
-                // it leaves the box: a chord of a curve reaching 1e308 is long).
+                // it leaves the box: a chord of a curve reaching 1e308 is long;
+                // one whose length overflows is passed over whole).
+                if (!std::isfinite(len)) {
+                    pass(v[i - 1].t, len, v[i].t);
+                    continue;
+                }
                 double s0 = 0, s1 = len;
                 if (!keep.contains(a) || !keep.contains(b)) {
                     const auto part = clip_line(a, b, keep);
