@@ -22,19 +22,28 @@ void expect_near(const PatchPoint& a, const PatchPoint& b, double eps, const cha
     EXPECT_LE(distance(a.st, b.st), eps * 1e-2) << what;
 }
 
+// Calls check(patch, u, v) on `trials` seeded random patches, each at a
+// random (u, v) in [lo, hi]^2.
+template <class Patch, class Check>
+void at_random_points(unsigned seed, int trials, double lo, double hi, Check check) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> t(lo, hi);
+    for (int trial = 0; trial < trials; ++trial) {
+        const auto p = test::random_patch<Patch>(rng);
+        const double u = t(rng), v = t(rng);
+        check(p, u, v);
+    }
+}
+
 template <class Patch>
 class BezierPatchTest : public ::testing::Test {};
 using BezierKinds = ::testing::Types<BilinearPatch, QuadPatch, CubicPatch, BezierPatch<1, 3>>;
 TYPED_TEST_SUITE(BezierPatchTest, BezierKinds);
 
 TYPED_TEST(BezierPatchTest, DeCasteljauEqualsMatrixForm) {
-    std::mt19937 rng(1);
-    std::uniform_real_distribution<double> t(0, 1);
-    for (int trial = 0; trial < 200; ++trial) {
-        const auto p = test::random_patch<TypeParam>(rng);
-        const double u = t(rng), v = t(rng);
+    at_random_points<TypeParam>(1, 200, 0, 1, [](const auto& p, double u, double v) {
         expect_near(p.eval(u, v), p.eval_matrix(u, v), kEps, "eval vs matrix");
-    }
+    });
 }
 
 TYPED_TEST(BezierPatchTest, CornersInterpolateExactly) {
@@ -48,12 +57,8 @@ TYPED_TEST(BezierPatchTest, CornersInterpolateExactly) {
 }
 
 TYPED_TEST(BezierPatchTest, DerivativesMatchFiniteDifferences) {
-    std::mt19937 rng(3);
-    std::uniform_real_distribution<double> t(0.01, 0.99);
-    const double h = 1e-5;
-    for (int trial = 0; trial < 100; ++trial) {
-        const auto p = test::random_patch<TypeParam>(rng);
-        const double u = t(rng), v = t(rng);
+    at_random_points<TypeParam>(3, 100, 0.01, 0.99, [](const auto& p, double u, double v) {
+        const double h = 1e-5;
         const auto d = p.derivatives(u, v);
         const auto at = [&](double a, double b) { return p.eval(a, b).p; };
         const Vec3 du = (at(u + h, v) - at(u - h, v)) / (2 * h);
@@ -65,7 +70,7 @@ TYPED_TEST(BezierPatchTest, DerivativesMatchFiniteDifferences) {
         EXPECT_LE((d.dv - dv).length(), 1e-5) << "u " << u << " v " << v;
         EXPECT_LE((d.duv - duv).length(), 1e-2) << "u " << u << " v " << v;
         expect_near(d.point, p.eval(u, v), kEps, "point of derivatives");
-    }
+    });
 }
 
 TYPED_TEST(BezierPatchTest, SplitsAndSubpatchesReproduceTheSurface) {
@@ -89,16 +94,12 @@ TYPED_TEST(BezierPatchTest, SplitsAndSubpatchesReproduceTheSurface) {
 }
 
 TYPED_TEST(BezierPatchTest, NormalsAreUnitAndAlongTheCrossProduct) {
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<double> t(0, 1);
-    for (int trial = 0; trial < 100; ++trial) {
-        const auto p = test::random_patch<TypeParam>(rng);
-        const double u = t(rng), v = t(rng);
+    at_random_points<TypeParam>(5, 100, 0, 1, [](const auto& p, double u, double v) {
         const Vec3 n = patch_normal(p, u, v);
         const auto d = p.derivatives(u, v);
         EXPECT_NEAR(n.length(), 1.0, 1e-12);
         EXPECT_GT(n.dot(d.du.cross(d.dv)), 0);
-    }
+    });
 }
 
 TEST(BezierPatch, DegreeElevationKeepsTheSurface) {
@@ -110,14 +111,10 @@ TEST(BezierPatch, DegreeElevationKeepsTheSurface) {
 }
 
 TEST(BSplinePatch, EqualsItsBezierConversion) {
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<double> t(0, 1);
-    for (int trial = 0; trial < 200; ++trial) {
-        const auto b = test::random_patch<BSplinePatch>(rng);
-        const double u = t(rng), v = t(rng);
+    at_random_points<BSplinePatch>(7, 200, 0, 1, [](const BSplinePatch& b, double u, double v) {
         expect_near(b.eval_matrix(u, v), b.to_bezier().eval(u, v), kEps, "bspline vs bezier");
         expect_near(b.eval_matrix(u, v), b.to_bezier().eval_matrix(u, v), kEps, "two matrices");
-    }
+    });
 }
 
 TEST(BSplinePatch, GridPiecesMeetContinuously) {

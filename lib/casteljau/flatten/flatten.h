@@ -38,6 +38,12 @@ const Curve& subdivision_form(const Curve& c) {
 }
 inline HConic subdivision_form(const Conic& c) { return HConic::from(c); }
 
+// Depth of the culling subdivision that fills (raster/path_edges.h) and
+// strokes (stroke/stroker.cpp) do before flattening only what is near the
+// image: 2^-40 of a 1e9 px curve is ~1e-3 px, so deeper never helps, and a
+// piece still over 4 image sizes at this depth is taken as its chord.
+inline constexpr int kCullDepth = 40;
+
 // UniformBest's N per curve, memoized per thread (keyed by the curve's exact
 // control points and the tolerance), so that repeated renders for a
 // comparison time the sampling, not the search. A comparison tool: the memo

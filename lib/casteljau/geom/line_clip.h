@@ -3,8 +3,8 @@
 // and evaluated with lerp.
 //
 // Any finite end points are handled, up to 1e308: each bound's parameter is
-// a ratio of halved differences, (v/2 - a/2) / (b/2 - a/2), which never
-// overflows (b - a itself can), and lerp's (1 - t) a + t b never overflows.
+// a crossing_parameter (below), which never overflows, and lerp's
+// (1 - t) a + t b never overflows.
 // An end inside the box is kept exactly; a clipped end lies exactly on the
 // bound that clipped it.
 #pragma once
@@ -17,6 +17,14 @@
 #include <optional>
 
 namespace casteljau {
+
+// Where a coordinate running from `from` to `to` reaches v: (v - from) /
+// (to - from), computed from halved differences, so finite for any finite
+// arguments (to - from itself can overflow) and equal to the plain ratio
+// otherwise (halving is exact).
+inline double crossing_parameter(double v, double from, double to) {
+    return (0.5 * v - 0.5 * from) / (0.5 * to - 0.5 * from);
+}
 
 // The part of segment ab inside `box` (borders included), or nothing.
 inline std::optional<std::array<Point, 2>> clip_line(Point a, Point b, const Rect& box) {
@@ -32,9 +40,8 @@ inline std::optional<std::array<Point, 2>> clip_line(Point a, Point b, const Rec
     } lo{0}, hi{1};
     const auto narrow = [&](int axis, double from, double to, double min, double max) {
         if (from == to) return from >= min && from <= max;
-        const double half_span = 0.5 * to - 0.5 * from;
-        End u{(0.5 * min - 0.5 * from) / half_span, axis, min};
-        End v{(0.5 * max - 0.5 * from) / half_span, axis, max};
+        End u{crossing_parameter(min, from, to), axis, min};
+        End v{crossing_parameter(max, from, to), axis, max};
         if (u.t > v.t) std::swap(u, v);
         if (u.t > lo.t) lo = u;
         if (v.t < hi.t) hi = v;

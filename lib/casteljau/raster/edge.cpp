@@ -1,5 +1,7 @@
 #include "casteljau/raster/edge.h"
 
+#include "casteljau/geom/line_clip.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -21,17 +23,14 @@ void EdgeList::add_line(Point a, Point b) {
     // y clip: nothing outside [y0, y1] covers a row.
     // Interpolation that stays finite for any finite end points, up to 1e308,
     // where a plain difference of two coordinates overflows (and inf * 0 is
-    // NaN): the ratio of halved differences (exactly the plain ratio
-    // otherwise), and p + (q - p) r, or (1 - r) p + r q where q - p overflows.
-    const auto ratio = [](double v, double from, double to) {
-        return (0.5 * v - 0.5 * from) / (0.5 * to - 0.5 * from);
-    };
+    // NaN): crossing_parameter (line_clip.h), and p + (q - p) r, or
+    // (1 - r) p + r q where q - p overflows.
     const auto mix = [](double p, double q, double r) {
         const double d = q - p;
         return std::isfinite(d) ? p + d * r : (1.0 - r) * p + r * q;
     };
     const double top = clip_.y0, bottom = clip_.y1;
-    const auto x_at = [&](double y) { return mix(a.x, b.x, ratio(y, a.y, b.y)); };
+    const auto x_at = [&](double y) { return mix(a.x, b.x, crossing_parameter(y, a.y, b.y)); };
     if (a.y < top) a = {x_at(top), top};
     if (b.y > bottom) b = {x_at(bottom), bottom};
     // x clip: split at the borders, then clamp (the clamped parts are vertical).
@@ -41,7 +40,7 @@ void EdgeList::add_line(Point a, Point b) {
     int n = 1;
     for (double border : {left, right}) {
         if ((a.x < border) != (b.x < border) && a.x != b.x) {
-            const double y = mix(a.y, b.y, ratio(border, a.x, b.x));
+            const double y = mix(a.y, b.y, crossing_parameter(border, a.x, b.x));
             if (y > a.y && y < b.y) ys[n++] = y;
         }
     }

@@ -31,10 +31,6 @@
 
 namespace casteljau {
 
-// Depth of the culling subdivision: 2^-40 of a 1e9 px curve is ~1e-3 px, so
-// deeper never helps.
-inline constexpr int kCullDepth = 40;
-
 // Adds the filled outline of `path` under `to_device` to `edges` (whose canvas
 // size is set). With `measure_error` the exact error measure of every
 // flattened piece is folded into the returned stats (for --stats; slow).

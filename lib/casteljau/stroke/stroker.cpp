@@ -338,10 +338,6 @@ Path dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
     return out;
 }
 
-// Halvings of a segment far larger than the visible box: as in path_edges.h,
-// 2^-40 of anything that fits in a double near the box is about a box size.
-constexpr int kCullDepth = 40;
-
 // The parts of `path` within `keep`, as open or closed subpaths: a segment
 // whose control box misses `keep` is left out and its subpath is cut there
 // (the cut ends lie out of reach, so their caps cannot show); a line is
