@@ -1,0 +1,99 @@
+#include "casteljau/hit/bernstein_poly.h"
+
+#include "casteljau/curve/roots.h"
+
+#include <variant>
+
+namespace casteljau {
+
+double BernsteinPoly::eval(double t) const {
+    std::array<double, kMaxDegree + 1> b = c;
+    for (int r = degree; r > 0; --r)
+        for (int i = 0; i < r; ++i) b[i] = b[i] + t * (b[i + 1] - b[i]);
+    return b[0];
+}
+
+BernsteinPoly operator*(const BernsteinPoly& a, const BernsteinPoly& b) {
+    BernsteinPoly r;
+    r.degree = a.degree + b.degree;
+    for (int i = 0; i <= a.degree; ++i)
+        for (int j = 0; j <= b.degree; ++j)
+            r.c[i + j] += binomial(a.degree, i) * binomial(b.degree, j) /
+                          binomial(r.degree, i + j) * a.c[i] * b.c[j];
+    return r;
+}
+
+BernsteinPoly operator-(const BernsteinPoly& a, const BernsteinPoly& b) {
+    BernsteinPoly r = a;
+    for (int i = 0; i <= a.degree; ++i) r.c[i] -= b.c[i];
+    return r;
+}
+
+BernsteinPoly operator+(const BernsteinPoly& a, const BernsteinPoly& b) {
+    BernsteinPoly r = a;
+    for (int i = 0; i <= a.degree; ++i) r.c[i] += b.c[i];
+    return r;
+}
+
+BernsteinPoly derivative(const BernsteinPoly& a) {
+    BernsteinPoly r;
+    if (a.degree == 0) return r;
+    r.degree = a.degree - 1;
+    for (int i = 0; i < a.degree; ++i) r.c[i] = a.degree * (a.c[i + 1] - a.c[i]);
+    return r;
+}
+
+namespace {
+
+template <std::size_t N>
+HomogeneousSegment from_points(const std::array<Point, N>& p, const std::array<double, N>& w,
+                               Point origin) {
+    HomogeneousSegment h;
+    h.x.degree = h.y.degree = h.w.degree = int(N) - 1;
+    for (std::size_t i = 0; i < N; ++i) {
+        h.x.c[i] = w[i] * (p[i].x - origin.x);
+        h.y.c[i] = w[i] * (p[i].y - origin.y);
+        h.w.c[i] = w[i];
+    }
+    return h;
+}
+
+template <int N>
+HomogeneousSegment from_bez(const Bez<N>& b, Point origin) {
+    std::array<double, N + 1> ones;
+    ones.fill(1.0);
+    return from_points(b.p, ones, origin);
+}
+
+} // namespace
+
+HomogeneousSegment HomogeneousSegment::from(const Segment& s, Point origin) {
+    if (const Conic* c = std::get_if<Conic>(&s))
+        return from_points(c->control_points(), std::array<double, 3>{1.0, c->w, 1.0}, origin);
+    return std::visit(
+        [&](const auto& b) -> HomogeneousSegment {
+            if constexpr (std::is_same_v<std::decay_t<decltype(b)>, Conic>)
+                return {};
+            else
+                return from_bez(b, origin);
+        },
+        s);
+}
+
+BernsteinPoly HomogeneousSegment::x_minus(double v) const {
+    BernsteinPoly r = x;
+    for (int i = 0; i <= r.degree; ++i) r.c[i] -= v * w.c[i];
+    return r;
+}
+
+BernsteinPoly HomogeneousSegment::y_minus(double v) const {
+    BernsteinPoly r = y;
+    for (int i = 0; i <= r.degree; ++i) r.c[i] -= v * w.c[i];
+    return r;
+}
+
+int roots_in_unit_interval(const BernsteinPoly& p, std::span<double> out) {
+    return bernstein_roots(p.coefficients(), out);
+}
+
+} // namespace casteljau

@@ -1,0 +1,31 @@
+// Hit-testing strokes, and their tight bounds.
+//
+// A stroke is the nonzero fill of its outline polygons (stroke/stroker.h),
+// whose vertices lie on the true outline (offsets are exact at every sample,
+// caps and joins are sampled on their arcs) and whose edges stay within the
+// tolerance of it. So, for the outline built at tolerance `tol`:
+// * distance: 0 inside the polygons; outside, the distance to their edges,
+//   within `tol` of the distance to the true stroke;
+// * bounds: the box of the polygons' vertices lies inside the true stroke's
+//   box, which lies inside that box grown by `tol`; the grown box is
+//   returned, so it holds the stroke and exceeds its tight box by <= tol.
+// Dashes, caps, joins and miter limits are all honoured, as drawn.
+#pragma once
+
+#include "casteljau/curve/path.h"
+#include "casteljau/geom/rect.h"
+#include "casteljau/scene/scene.h"
+
+namespace casteljau {
+
+/// Distance from `p` to the stroke of `path` (0 inside), within `tolerance`.
+double stroke_distance(const Path& path, const StrokeGeometry& style, Point p,
+                       double tolerance = 1e-3);
+
+/// A box that holds the stroke and exceeds its tight bounds by at most `tolerance`.
+Rect stroke_bounds(const Path& path, const StrokeGeometry& style, double tolerance = 1e-3);
+
+/// Tight bounds of the path's fill (its curves' extrema): Path::bounds().
+inline Rect fill_bounds(const Path& path) { return path.bounds(); }
+
+} // namespace casteljau

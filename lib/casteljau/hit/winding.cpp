@@ -1,0 +1,80 @@
+#include "casteljau/hit/winding.h"
+
+#include "casteljau/hit/bernstein_poly.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace casteljau {
+
+namespace {
+
+// The sign with sgn(0) = +1: a point on the ray's line counts as above it.
+bool above(double v) { return v >= 0.0; }
+
+// The parameter in [a, b] where f changes sign (above(f(a)) != above(f(b))),
+// by bisection: 64 halvings exhaust a double's resolution in [0, 1].
+double sign_change(const BernsteinPoly& f, double a, double b) {
+    const bool at_a = above(f.eval(a));
+    for (int i = 0; i < 64 && b - a > 0.0; ++i) {
+        const double m = 0.5 * (a + b);
+        if (m <= a || m >= b) break;
+        (above(f.eval(m)) == at_a ? a : b) = m;
+    }
+    return 0.5 * (a + b);
+}
+
+} // namespace
+
+int segment_crossings(const Segment& s, Point p) {
+    const HomogeneousSegment h = HomogeneousSegment::from(s, p);
+    const BernsteinPoly f = h.y_minus(0.0);
+    const auto coef = f.coefficients();
+    const bool all_above = std::all_of(coef.begin(), coef.end(), above);
+    const bool all_below = std::none_of(coef.begin(), coef.end(), above);
+    const auto xs = h.x.coefficients();
+    // x_i w_i <= 0 for every control point: the curve never gets right of p.
+    if (all_above || all_below ||
+        std::all_of(xs.begin(), xs.end(), [](double x) { return x <= 0; }))
+        return 0;
+    // Samples: both ends and the middles between consecutive roots; f keeps
+    // its sign between two samples except across one root or at an end.
+    std::array<double, BernsteinPoly::kMaxDegree> roots{};
+    const int k = roots_in_unit_interval(f, roots);
+    std::array<double, BernsteinPoly::kMaxDegree + 3> t{};
+    int n = 0;
+    t[n++] = 0.0;
+    double prev = 0.0;
+    for (int i = 0; i < k; ++i) t[n++] = 0.5 * (prev + roots[i]), prev = roots[i];
+    t[n++] = 0.5 * (prev + 1.0);
+    t[n++] = 1.0;
+    int winding = 0;
+    // Exact end values: f(0) and f(1) are the end coefficients.
+    bool was_above = above(coef.front());
+    for (int i = 1; i < n; ++i) {
+        const bool now_above = i == n - 1 ? above(coef.back()) : above(f.eval(t[i]));
+        if (now_above == was_above) continue;
+        const double tc = sign_change(f, t[i - 1], t[i]);
+        if (h.x.eval(tc) / h.w.eval(tc) > 0.0) winding += now_above ? 1 : -1;
+        was_above = now_above;
+    }
+    return winding;
+}
+
+int winding_number(const Path& path, Point p) {
+    int winding = 0;
+    for (const Subpath& sp : path.subpaths()) {
+        if (sp.segments.empty()) continue;
+        for (const Segment& s : sp.segments) winding += segment_crossings(s, p);
+        const Point end = segment_end(sp.segments.back());
+        if (end != sp.start) winding += segment_crossings(Line{end, sp.start}, p);
+    }
+    return winding;
+}
+
+bool fill_contains(const Path& path, Point p, FillRule rule) {
+    const int w = winding_number(path, p);
+    return rule == FillRule::NonZero ? w != 0 : (w & 1) != 0;
+}
+
+} // namespace casteljau
