@@ -18,37 +18,13 @@
 namespace casteljau {
 namespace {
 
+using testing::random_blob;
 using testing::Rng;
 
 Path parse(const char* d) {
     const PathDataResult r = parse_path_data(d);
     EXPECT_FALSE(r.error) << d;
     return r.path;
-}
-
-// A closed chain of random lines, quadratics, cubics and conics through
-// random points of a w x w box.
-Path random_blob(Rng& rng, double w, int segments) {
-    Path p;
-    p.move_to(rng.point(w));
-    for (int i = 0; i < segments; ++i) {
-        switch (rng.integer(0, 3)) {
-        case 0:
-            p.line_to(rng.point(w));
-            break;
-        case 1:
-            p.quad_to(rng.point(w), rng.point(w));
-            break;
-        case 2:
-            p.cubic_to(rng.point(w), rng.point(w), rng.point(w));
-            break;
-        default:
-            p.conic_to(rng.point(w), rng.point(w), rng.log_uniform(0.1, 10));
-            break;
-        }
-    }
-    p.close();
-    return p;
 }
 
 Segment random_segment(Rng& rng, double w) {

@@ -22,6 +22,29 @@ Conic random_conic(Rng& rng, double extent) {
     return {rng.point(extent), rng.point(extent), rng.point(extent), rng.log_uniform(0.05, 20)};
 }
 
+Path random_blob(Rng& rng, double extent, int segments) {
+    Path p;
+    p.move_to(rng.point(extent));
+    for (int i = 0; i < segments; ++i) {
+        switch (rng.integer(0, 3)) {
+        case 0:
+            p.line_to(rng.point(extent));
+            break;
+        case 1:
+            p.quad_to(rng.point(extent), rng.point(extent));
+            break;
+        case 2:
+            p.cubic_to(rng.point(extent), rng.point(extent), rng.point(extent));
+            break;
+        default:
+            p.conic_to(rng.point(extent), rng.point(extent), rng.log_uniform(0.1, 10));
+            break;
+        }
+    }
+    p.close();
+    return p;
+}
+
 Bezier random_bezier(Rng& rng, int degree, double extent) {
     Bezier b;
     b.degree = degree;

@@ -5,6 +5,7 @@
 #include "casteljau/curve/bez.h"
 #include "casteljau/curve/bezier.h"
 #include "casteljau/curve/conic.h"
+#include "casteljau/curve/path.h"
 
 #include <random>
 #include <string>
@@ -38,6 +39,9 @@ std::vector<NamedCubic> cubic_corpus(unsigned seed, int per_kind);
 QuadBez random_quad(Rng& rng, double extent);
 CubicBez random_cubic(Rng& rng, double extent);
 Conic random_conic(Rng& rng, double extent);
+// A closed chain of `segments` random lines, quadratics, cubics and conics
+// through points of an extent x extent box.
+Path random_blob(Rng& rng, double extent, int segments);
 Bezier random_bezier(Rng& rng, int degree, double extent);
 
 // Integral of sqrt(kappa / (8 tol)) ds over the curve: the segment count of an

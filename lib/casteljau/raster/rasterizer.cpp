@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace casteljau {
 
@@ -10,11 +11,18 @@ void Rasterizer::fill(const EdgeList& edges, FillRule rule, bool antialias, Span
     x0_ = edges.clip().x0;
     const int row_end = edges.row_end();
     sorted_.clear();
+    std::uint32_t order = 0;
     for (const Edge& e : edges.edges())
-        sorted_.push_back({e.x0 - float(x0_), e.y0, e.y1, (e.x1 - e.x0) / (e.y1 - e.y0), e.dir});
+        sorted_.push_back(
+            {e.x0 - float(x0_), e.y0, e.y1, (e.x1 - e.x0) / (e.y1 - e.y0), e.dir, order++});
     if (sorted_.empty() || width_ <= 0) return;
-    std::sort(sorted_.begin(), sorted_.end(),
-              [](const Active& a, const Active& b) { return a.y0 < b.y0; });
+    // Ties in y0 are broken by the order the edges were added, so any two
+    // edges meet a row in the same order whichever subset of the outline a
+    // band or tile holds: the rows' float sums, and so the pixels, are then
+    // the same bit for bit.
+    std::sort(sorted_.begin(), sorted_.end(), [](const Active& a, const Active& b) {
+        return a.y0 < b.y0 || (a.y0 == b.y0 && a.order < b.order);
+    });
     if (antialias && row_.width() != width_) row_.reset(width_);
     active_.clear();
     std::size_t next = 0;

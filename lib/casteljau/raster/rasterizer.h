@@ -17,6 +17,7 @@
 #include "casteljau/raster/span.h"
 #include "casteljau/raster/sweep.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace casteljau {
@@ -30,6 +31,7 @@ class Rasterizer {
   private:
     struct Active {
         float x0, y0, y1, dxdy, dir;
+        std::uint32_t order; // position in the edge list: the tie-breaker of the sort
     };
     struct Crossing {
         float x, dir;

@@ -22,4 +22,21 @@ class SpanSink {
     ~SpanSink() = default;
 };
 
+// Passes on the part of each span within the columns [x0, x1): lets a
+// rasterizer sweep whole rows of a larger frame while only a tile of it is
+// composited (partial re-render), without changing any coverage value.
+class ColumnClipSink final : public SpanSink {
+  public:
+    ColumnClipSink(SpanSink& inner, int x0, int x1) : inner_(inner), x0_(x0), x1_(x1) {}
+    void span(const Span& s) override {
+        const int a = s.x > x0_ ? s.x : x0_;
+        const int b = s.x + s.len < x1_ ? s.x + s.len : x1_;
+        if (a < b) inner_.span({s.y, a, b - a, s.coverage + (a - s.x)});
+    }
+
+  private:
+    SpanSink& inner_;
+    int x0_, x1_;
+};
+
 } // namespace casteljau

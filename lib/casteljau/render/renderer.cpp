@@ -64,30 +64,48 @@ RenderStats Renderer::render(const Scene& scene, const Affine& view, Canvas& can
     return stats_;
 }
 
+RenderStats Renderer::render_nodes(std::span<const Node* const> nodes, const Affine& view,
+                                   Canvas& canvas, const RenderOptions& options,
+                                   const PixelRect& frame) {
+    view_ = view;
+    frame_ = frame;
+    options_ = &options;
+    stats_ = {};
+    for (const Node* n : nodes) draw_node(*n, canvas, 0);
+    return stats_;
+}
+
+Rect Renderer::reach_box(const Shape& s, const Affine& view) {
+    const Affine m = view * s.transform;
+    return device_box(s.path.control_bounds(), m).inflated(stroke_reach(s, m));
+}
+
 Canvas& Renderer::layer(int depth) {
     while (int(layers_.size()) <= depth) layers_.push_back(std::make_unique<Canvas>());
     return *layers_[std::size_t(depth)];
 }
 
 void Renderer::draw_group(const Group& g, Canvas& target, int depth) {
-    for (const Node& n : g.children) {
-        if (const Shape* s = std::get_if<Shape>(&n.item)) {
-            // Opacity on a shape with both fill and stroke applies to the two
-            // together (SVG 1.1, 14.5): a layer, or the stroke would show the
-            // fill through it. With one paint, scaling its alpha is the same.
-            if (s->opacity < 1.0f && s->fill && s->stroke)
-                in_layer(n, target, depth, s->opacity, [&](Canvas& l) { draw_shape(*s, l, 1.0f); });
-            else
-                draw_shape(*s, target, s->opacity);
-            continue;
-        }
-        const Group& child = std::get<Group>(n.item);
-        if (child.opacity >= 1.0f)
-            draw_group(child, target, depth);
+    for (const Node& n : g.children) draw_node(n, target, depth);
+}
+
+void Renderer::draw_node(const Node& n, Canvas& target, int depth) {
+    if (const Shape* s = std::get_if<Shape>(&n.item)) {
+        // Opacity on a shape with both fill and stroke applies to the two
+        // together (SVG 1.1, 14.5): a layer, or the stroke would show the
+        // fill through it. With one paint, scaling its alpha is the same.
+        if (s->opacity < 1.0f && s->fill && s->stroke)
+            in_layer(n, target, depth, s->opacity, [&](Canvas& l) { draw_shape(*s, l, 1.0f); });
         else
-            in_layer(n, target, depth, child.opacity,
-                     [&](Canvas& l) { draw_group(child, l, depth + 1); });
+            draw_shape(*s, target, s->opacity);
+        return;
     }
+    const Group& child = std::get<Group>(n.item);
+    if (child.opacity >= 1.0f)
+        draw_group(child, target, depth);
+    else
+        in_layer(n, target, depth, child.opacity,
+                 [&](Canvas& l) { draw_group(child, l, depth + 1); });
 }
 
 template <class Draw>
@@ -113,18 +131,19 @@ void Renderer::in_layer(const Node& n, Canvas& target, int depth, float opacity,
 void Renderer::draw_shape(const Shape& s, Canvas& target, float opacity) {
     if (opacity <= 0.0f || (!s.fill && !s.stroke)) return;
     const Affine m = view_ * s.transform;
-    // A shape wholly above, below or right of the target draws nothing there
-    // (left of it, it can still change the winding, see path_edges.h).
-    const Rect box = device_box(s.path.control_bounds(), m).inflated(stroke_reach(s, m));
+    // A shape wholly outside the target draws nothing there. Left of it too:
+    // fills and stroke outlines are closed, so their winding is 0 right of
+    // them, and the sweep rounds the winding past an outline's last column.
+    const Rect box = reach_box(s, view_);
     if (box.is_empty() || box.y1 <= target.origin_y() ||
-        box.y0 >= target.origin_y() + target.height() ||
+        box.y0 >= target.origin_y() + target.height() || box.x1 <= target.origin_x() ||
         box.x0 >= target.origin_x() + target.width())
         return;
-    // Columns: the target's (a layer's own, or the frame's). Rows: clipped to
-    // the frame, drawn for the target's band only (see EdgeList), so that a
-    // band gets the same edges as the whole frame.
-    const PixelRect clip{target.origin_x(), frame_.y0, target.origin_x() + target.width(),
-                         frame_.y1};
+    // Edges are clipped to the frame, columns and rows alike, and built for
+    // the target's rows only (see EdgeList); spans are cut to the target's
+    // columns when composited (paint). So a band, a layer or a dirty tile
+    // gets the same edges and coverage as the whole frame, bit for bit.
+    const PixelRect& clip = frame_;
     if (s.fill) {
         auto t = Clock::now();
         edges_.reset(clip, target.origin_y(), target.origin_y() + target.height());
@@ -161,11 +180,12 @@ void Renderer::draw_stroke(const Shape& s, const Affine& m, const PixelRect& cli
     auto t = Clock::now();
     // The device tolerance in user units: divided by the largest stretch.
     polygons_.clear();
-    // The target's pixels (its rows within the frame) in user space, one
-    // pixel wider for the antialiased edge: dashes beyond it are not built.
-    const Rect pixels{double(clip.x0 - 1), double(std::max(clip.y0, target.origin_y()) - 1),
-                      double(clip.x1 + 1),
-                      double(std::min(clip.y1, target.origin_y() + target.height()) + 1)};
+    // The frame's pixels in user space, one pixel wider for the antialiased
+    // edge: dashes beyond it are not built. The frame's, not the target's:
+    // the outline's samples and dash ends depend on that box (clipped chords,
+    // halved curves), and every band or tile must get the same outline.
+    const Rect pixels{double(clip.x0 - 1), double(clip.y0 - 1), double(clip.x1 + 1),
+                      double(clip.y1 + 1)};
     stroke_outline(s.path, *geometry, options_->flatten.tolerance / m.max_scale(), polygons_,
                    device_box(pixels, m.inverse()));
     edges_.reset(clip, target.origin_y(), target.origin_y() + target.height());
@@ -192,6 +212,7 @@ double Renderer::stroke_reach(const Shape& s, const Affine& m) {
 void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float opacity,
                      FillRule rule, Canvas& target) {
     const auto t = Clock::now();
+    const int x0 = target.origin_x(), x1 = x0 + target.width();
     if (gradient) {
         // Gradient space -> device: the shape's transform, then for
         // objectBoundingBox units the unit square onto the shape's box (an
@@ -206,13 +227,15 @@ void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float
         if (gradient_shader_.prepare(*gradient, to_device * gradient->transform, opacity,
                                      options_->linear_light_gradients)) {
             GradientSpanPainter painter(target, gradient_shader_);
-            raster_.fill(edges_, rule, options_->antialias, painter);
+            ColumnClipSink clipped(painter, x0, x1);
+            raster_.fill(edges_, rule, options_->antialias, clipped);
         }
     } else {
         const Premul c = premultiply(color, opacity);
         if (c.a > 0.0f) {
             SolidSpanPainter painter(target, c);
-            raster_.fill(edges_, rule, options_->antialias, painter);
+            ColumnClipSink clipped(painter, x0, x1);
+            raster_.fill(edges_, rule, options_->antialias, clipped);
         }
     }
     stats_.raster_ms += ms_since(t);

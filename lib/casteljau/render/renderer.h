@@ -15,6 +15,7 @@
 #include "casteljau/stroke/stroker.h"
 
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace casteljau {
@@ -45,12 +46,23 @@ class Renderer {
                        const RenderOptions& options);
     RenderStats render(const Scene& scene, const Affine& view, Canvas& canvas,
                        const RenderOptions& options, const PixelRect& frame);
+    // Draws only the given nodes, in order, as render() would draw them as the
+    // root's children: for a caller that culls with its own index (see
+    // Drawing). `canvas` may be any tile of `frame`, and gets exactly the
+    // pixels a render of the whole frame gives there.
+    RenderStats render_nodes(std::span<const Node* const> nodes, const Affine& view, Canvas& canvas,
+                             const RenderOptions& options, const PixelRect& frame);
+
+    // The device box (under `view`) outside which a shape changes no pixel:
+    // its control box mapped, grown by the stroke's reach.
+    static Rect reach_box(const Shape& s, const Affine& view);
 
     // How far (device px) a shape's stroke can reach beyond its path.
     static double stroke_reach(const Shape& s, const Affine& to_device);
 
   private:
     void draw_group(const Group& g, Canvas& target, int depth);
+    void draw_node(const Node& n, Canvas& target, int depth);
     void draw_shape(const Shape& s, Canvas& target, float opacity);
     // Draws into an offscreen layer over the node's bounds, composited with `opacity`.
     template <class Draw>

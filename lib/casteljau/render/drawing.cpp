@@ -1,0 +1,84 @@
+#include "casteljau/render/drawing.h"
+
+#include "casteljau/geom/pixel_index.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace casteljau {
+
+Drawing::Drawing(int width, int height) : width_(width), height_(height) {
+    scene_.width = width;
+    scene_.height = height;
+}
+
+Drawing::ShapeId Drawing::fill(const Path& path, const Paint& paint, const Affine& transform,
+                               FillRule rule) {
+    Shape s{path, transform, Fill{paint.color, paint.gradient, paint.opacity, rule}, {}};
+    return add(std::move(s));
+}
+
+Drawing::ShapeId Drawing::stroke(const Path& path, const Paint& paint,
+                                 const StrokeGeometry& geometry, const Affine& transform) {
+    Shape s{path, transform, {}, Stroke{paint.color, paint.gradient, paint.opacity, geometry}};
+    return add(std::move(s));
+}
+
+Drawing::ShapeId Drawing::add(Shape shape) {
+    boxes_.push_back(Renderer::reach_box(shape, Affine::identity()));
+    scene_.root.children.push_back(Node{std::move(shape)});
+    return boxes_.size() - 1;
+}
+
+const Shape& Drawing::shape(ShapeId id) const {
+    return std::get<Shape>(scene_.root.children[id].item);
+}
+
+PixelRect Drawing::replace(ShapeId id, Shape shape) {
+    const PixelRect before = damage(id);
+    boxes_[id] = Renderer::reach_box(shape, Affine::identity());
+    scene_.root.children[id].item = std::move(shape);
+    return united(before, damage(id));
+}
+
+PixelRect Drawing::damage(ShapeId id) const {
+    const Rect& b = boxes_[id];
+    if (b.is_empty()) return {};
+    // Pixel [x, x + 1) can be touched when the box overlaps it.
+    const PixelRect r{floor_in(b.x0, 0, width_), floor_in(b.y0, 0, height_),
+                      ceil_in(b.x1, 0, width_), ceil_in(b.y1, 0, height_)};
+    return r.width() > 0 && r.height() > 0 ? r : PixelRect{};
+}
+
+RenderStats Drawing::render(Canvas& canvas, Premul background, const RenderOptions& options,
+                            int threads) {
+    return bands_.render(scene_, Affine::identity(), canvas, options, background, threads);
+}
+
+RenderStats Drawing::render_region(Canvas& canvas, const PixelRect& dirty, Premul background,
+                                   const RenderOptions& options) {
+    const PixelRect r{std::max(dirty.x0, 0), std::max(dirty.y0, 0), std::min(dirty.x1, width_),
+                      std::min(dirty.y1, height_)};
+    if (r.width() <= 0 || r.height() <= 0) return {};
+    crossing_.clear();
+    for (std::size_t i = 0; i < boxes_.size(); ++i) {
+        const Rect& b = boxes_[i];
+        if (b.x1 > r.x0 && b.x0 < r.x1 && b.y1 > r.y0 && b.y0 < r.y1)
+            crossing_.push_back(&scene_.root.children[i]);
+    }
+    tile_.reset(r.width(), r.height(), r.x0, r.y0, background);
+    const RenderStats stats = renderer_.render_nodes(crossing_, Affine::identity(), tile_, options,
+                                                     {0, 0, width_, height_});
+    for (int y = r.y0; y < r.y1; ++y)
+        std::memcpy(static_cast<void*>(canvas.row(y) + r.x0), tile_.row(y - r.y0),
+                    std::size_t(r.width()) * sizeof(Premul));
+    return stats;
+}
+
+PixelRect united(const PixelRect& a, const PixelRect& b) {
+    if (a.width() <= 0 || a.height() <= 0) return b;
+    if (b.width() <= 0 || b.height() <= 0) return a;
+    return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
+} // namespace casteljau

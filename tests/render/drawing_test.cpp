@@ -1,0 +1,131 @@
+// Partial re-render: a tile of the frame, and a Drawing redrawn after edits
+// only where they damaged it, must equal a full render pixel for pixel.
+#include "casteljau/render/drawing.h"
+#include "casteljau/svg/reader.h"
+#include "corpus.h"
+
+#include <cstring>
+#include <gtest/gtest.h>
+
+namespace casteljau {
+namespace {
+
+using testing::Rng;
+
+constexpr Premul kBackground{0.5f, 0.25f, 0.0f, 0.5f};
+
+// Rows of `tile` (placed at its origin) that differ from the same pixels of `full`.
+int differing_rows(const Canvas& full, const Canvas& tile) {
+    int differing = 0;
+    for (int y = 0; y < tile.height(); ++y)
+        differing += std::memcmp(full.row(y + tile.origin_y()) + tile.origin_x(), tile.row(y),
+                                 std::size_t(tile.width()) * sizeof(Premul)) != 0;
+    return differing;
+}
+
+PixelRect random_rect(Rng& rng, int w, int h) {
+    const int x0 = rng.integer(-10, w - 1), y0 = rng.integer(-10, h - 1);
+    return {x0, y0, x0 + rng.integer(1, w / 2), y0 + rng.integer(1, h / 2)};
+}
+
+TEST(PartialRender, TileEqualsFullRenderOnTheExamples) {
+    // Layers (opacity.svg), gradients, dashes and joins (strokes.svg), holes
+    // and even-odd: every tile, wherever its edges fall, bit for bit.
+    Rng rng(6);
+    for (const char* file : {"dense.svg", "opacity.svg", "holes.svg", "transforms.svg",
+                             "strokes.svg", "gradients.svg", "stars.svg", "curves.svg"}) {
+        const SvgResult doc = read_svg_file(std::string(CASTELJAU_EXAMPLES "/svg/") + file);
+        ASSERT_TRUE(doc.scene) << doc.error;
+        const Affine view = Affine::scale(1.25);
+        const int w = int(doc.scene->width * 1.25), h = int(doc.scene->height * 1.25);
+        Canvas full(w, h);
+        BandRenderer bands;
+        bands.render(*doc.scene, view, full, {}, kBackground, 1);
+        Renderer renderer;
+        Canvas tile;
+        for (int i = 0; i < 12; ++i) {
+            PixelRect r = random_rect(rng, w, h);
+            r = {std::max(r.x0, 0), std::max(r.y0, 0), std::min(r.x1, w), std::min(r.y1, h)};
+            if (r.width() <= 0 || r.height() <= 0) continue;
+            tile.reset(r.width(), r.height(), r.x0, r.y0, kBackground);
+            renderer.render(*doc.scene, view, tile, {}, {0, 0, w, h});
+            EXPECT_EQ(differing_rows(full, tile), 0)
+                << file << " tile " << r.x0 << "," << r.y0 << " " << r.width() << "x" << r.height();
+        }
+    }
+}
+
+Shape random_shape(Rng& rng, double extent) {
+    Shape s;
+    const Vec2 at{rng.uniform(-20, extent), rng.uniform(-20, extent)};
+    s.path = testing::random_blob(rng, rng.uniform(5, 80), rng.integer(1, 5));
+    s.transform = Affine::translate(at) * Affine::rotate(rng.uniform(0, 6.28));
+    const Rgba color{float(rng.uniform(0, 1)), float(rng.uniform(0, 1)), float(rng.uniform(0, 1)),
+                     float(rng.uniform(0.3, 1))};
+    const int kind = rng.integer(0, 3);
+    if (kind != 1) {
+        s.fill = Fill{color, nullptr, 1, rng.integer(0, 1) ? FillRule::EvenOdd : FillRule::NonZero};
+        if (rng.integer(0, 3) == 0) {
+            auto g = std::make_shared<Gradient>();
+            g->stops = {{0, color}, {1, Rgba{0, 0, 1, 1}}};
+            s.fill->gradient = g;
+        }
+    }
+    if (kind != 0) {
+        Stroke st{color, nullptr, 1, {}};
+        st.geometry.width = rng.log_uniform(0.3, 12);
+        st.geometry.join = LineJoin(rng.integer(0, 2));
+        st.geometry.cap = LineCap(rng.integer(0, 2));
+        if (rng.integer(0, 2) == 0) st.geometry.dashes = {rng.uniform(1, 10), rng.uniform(1, 10)};
+        s.stroke = st;
+    }
+    if (kind == 2 && rng.integer(0, 1)) s.opacity = 0.6f; // fill and stroke: a layer
+    return s;
+}
+
+TEST(PartialRender, RedrawingTheDamageAfterEditsEqualsAFullRender) {
+    Rng rng(12);
+    const int w = 300, h = 280; // two and a bit bands of 128 rows
+    Drawing drawing(w, h);
+    for (int i = 0; i < 150; ++i) drawing.add(random_shape(rng, w));
+    Canvas edited(w, h), reference(w, h);
+    drawing.render(edited, kBackground);
+    for (int edit = 0; edit < 40; ++edit) {
+        const Drawing::ShapeId id = std::size_t(rng.integer(0, int(drawing.size()) - 1));
+        const PixelRect damage =
+            rng.integer(0, 4) == 0 ? drawing.remove(id) : drawing.replace(id, random_shape(rng, w));
+        drawing.render_region(edited, damage, kBackground);
+        drawing.render(reference, kBackground, {}, 2);
+        int differing = 0;
+        for (int y = 0; y < h; ++y)
+            differing +=
+                std::memcmp(edited.row(y), reference.row(y), std::size_t(w) * sizeof(Premul)) != 0;
+        ASSERT_EQ(differing, 0) << "edit " << edit << " of shape " << id << ", damage " << damage.x0
+                                << "," << damage.y0 << " " << damage.width() << "x"
+                                << damage.height();
+    }
+}
+
+TEST(PartialRender, ASmallRegionFlattensOnlyTheShapesCrossingIt) {
+    // A 40 x 40 grid of small discs: a 10 x 10 px region meets at most four.
+    Drawing drawing(400, 400);
+    for (int i = 0; i < 40; ++i)
+        for (int j = 0; j < 40; ++j) {
+            Path p;
+            p.move_to({i * 10.0 + 8, j * 10.0 + 5});
+            p.arc_to({3, 3}, 0, true, true, {i * 10.0 + 2, j * 10.0 + 5});
+            p.arc_to({3, 3}, 0, true, true, {i * 10.0 + 8, j * 10.0 + 5});
+            p.close();
+            drawing.fill(p, Paint::solid({0, 0, 0, 1}));
+        }
+    Canvas c(400, 400);
+    const RenderStats full = drawing.render(c, {});
+    const RenderStats part = drawing.render_region(c, {101, 101, 109, 109}, {});
+    EXPECT_GT(full.flatten.curves_in, 1000u);
+    EXPECT_GT(part.flatten.curves_in, 0u);
+    EXPECT_LE(part.flatten.curves_in * 1600, full.flatten.curves_in * 4)
+        << "part " << part.flatten.curves_in << " full " << full.flatten.curves_in;
+}
+
+} // namespace
+} // namespace casteljau
