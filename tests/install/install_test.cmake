@@ -1,5 +1,6 @@
 # Installs the built project into a scratch prefix, then configures, builds
-# and runs a consumer project that finds it with find_package(casteljau).
+# and runs the example application (examples/app), which finds it with
+# find_package(casteljau), and checks that it wrote its image.
 file(REMOVE_RECURSE "${WORK_DIR}")
 execute_process(COMMAND "${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${WORK_DIR}/prefix"
                 RESULT_VARIABLE rc)
@@ -15,8 +16,9 @@ execute_process(COMMAND "${CMAKE_COMMAND}" --build "${WORK_DIR}/build" RESULT_VA
 if(rc)
   message(FATAL_ERROR "building the consumer failed: ${rc}")
 endif()
-execute_process(COMMAND "${WORK_DIR}/build/consumer" RESULT_VARIABLE rc OUTPUT_VARIABLE out)
-if(rc OR NOT out MATCHES "segments [0-9]+")
+execute_process(COMMAND "${WORK_DIR}/build/casteljau_app" "${WORK_DIR}/app.png" RESULT_VARIABLE rc
+                OUTPUT_VARIABLE out)
+if(rc OR NOT out MATCHES "inside: 1" OR NOT EXISTS "${WORK_DIR}/app.png")
   message(FATAL_ERROR "the consumer failed: ${rc} ${out}")
 endif()
 message(STATUS "consumer: ${out}")

@@ -7,6 +7,15 @@
 
 namespace casteljau {
 
+Paint Paint::linear(Point from, Point to, std::vector<GradientStop> stops) {
+    auto g = std::make_shared<Gradient>();
+    g->p1 = from;
+    g->p2 = to;
+    g->object_bounding_box = false;
+    g->stops = std::move(stops);
+    return {{}, std::move(g), 1};
+}
+
 Drawing::Drawing(int width, int height) : width_(width), height_(height) {
     scene_.width = width;
     scene_.height = height;

@@ -39,6 +39,8 @@ struct Paint {
 
     /// A solid color.
     static Paint solid(Rgba c) { return {c, nullptr, 1}; }
+    /// A linear gradient from `from` to `to`, in the shape's path coordinates.
+    static Paint linear(Point from, Point to, std::vector<GradientStop> stops);
 };
 
 /// A retained, editable list of shapes on a width x height pixel canvas.
