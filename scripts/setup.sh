@@ -9,7 +9,7 @@ packages=(
   libopenimageio-dev openimageio-tools
   libgtest-dev libgmock-dev libbenchmark-dev
   libpugixml-dev libcli11-dev
-  librsvg2-bin python3
+  librsvg2-bin python3 doxygen
   clang libclang-rt-14-dev
 )
 

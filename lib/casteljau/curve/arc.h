@@ -23,6 +23,7 @@
 
 namespace casteljau {
 
+/// The endpoint parameterisation of an SVG arc command (SVG 1.1, F.6.2).
 struct SvgArcInput {
     Point from, to;
     Vec2 radii;
@@ -30,19 +31,22 @@ struct SvgArcInput {
     bool large_arc = false, sweep = false;
 };
 
+/// The centre parameterisation of an SVG arc (F.6.5), or what degenerates it.
 struct EllipseArc {
+    /// An arc, a straight line (a zero radius), or nothing (equal end points).
     enum class Kind { Arc, Line, Nothing } kind = Kind::Arc;
     Point center;
-    Vec2 radii;                    // corrected radii, both > 0 for an Arc
-    double x_rotation = 0;         // radians
-    double theta1 = 0, dtheta = 0; // radians; dtheta > 0 runs in the positive-angle direction
+    Vec2 radii;                    ///< corrected radii, both > 0 for an Arc
+    double x_rotation = 0;         ///< radians
+    double theta1 = 0, dtheta = 0; ///< radians; dtheta > 0 runs in the positive-angle direction
+    /// The map of the unit circle onto the ellipse (scale, rotate, translate).
     Affine unit_circle_map() const;
 };
 
 EllipseArc svg_arc(const SvgArcInput& in);
 
-// At most four pieces of at most 90 degrees each; returns how many. The first
-// piece starts exactly at in.from and the last ends exactly at in.to.
+/// At most four pieces of at most 90 degrees each; returns how many. The first
+/// piece starts exactly at in.from and the last ends exactly at in.to.
 int svg_arc_to_conics(const SvgArcInput& in, std::array<Conic, 4>& out);
 int svg_arc_to_cubics(const SvgArcInput& in, std::array<CubicBez, 4>& out);
 

@@ -22,14 +22,16 @@
 
 namespace casteljau {
 
-// c0 + c[0] t + c[1] t^2 + ... : a curve in the power (monomial) basis.
+/// c0 + c[0] t + c[1] t^2 + ... : a curve in the power (monomial) basis.
 template <int N>
 struct PowerCurve {
     Point c0;
     std::array<Vec2, N> c;
+    /// The point at parameter t in [0, 1].
     constexpr Point eval(double t) const { return horner_eval(c0, c, t); }
 };
 
+/// A Bezier curve of fixed degree N (1, 2 or 3) with its control points inline.
 template <int N>
 struct Bez {
     static_assert(N >= 1 && N <= 3, "fixed-degree curves are lines, quadratics and cubics");
@@ -37,32 +39,43 @@ struct Bez {
     std::array<Point, N + 1> p{};
 
     constexpr Bez() = default;
+    /// From N + 1 control points.
     constexpr Bez(const std::array<Point, N + 1>& pts) : p(pts) {}
+    /// A line from a to b.
     constexpr Bez(Point a, Point b) requires(N == 1) : p{a, b} {}
+    /// A quadratic from a to c with control point b.
     constexpr Bez(Point a, Point b, Point c) requires(N == 2) : p{a, b, c} {}
+    /// A cubic from a to d with control points b and c.
     constexpr Bez(Point a, Point b, Point c, Point d) requires(N == 3) : p{a, b, c, d} {}
 
+    /// Where the curve starts (t = 0).
     constexpr Point start() const { return p[0]; }
+    /// Where the curve ends (t = 1).
     constexpr Point end() const { return p[N]; }
 
+    /// The point at parameter t in [0, 1].
     constexpr Point eval(double t) const { return decasteljau_eval(points(), t); }
+    /// The point at t by the direct Bernstein sum (the reference for eval).
     constexpr Point eval_bernstein(double t) const { return bernstein_eval(points(), t); }
+    /// The same curve in the power basis (for cheap uniform sampling).
     constexpr PowerCurve<N> power() const {
         PowerCurve<N> pc{};
         pc.c0 = power_coefficients(points(), pc.c);
         return pc;
     }
 
-    // Control vectors of the derivative curve B'(t), a Bezier of degree N - 1.
+    /// Control vectors of the derivative curve B'(t), a Bezier of degree N - 1.
     constexpr std::array<Vec2, N> hodograph() const {
         std::array<Vec2, N> h{};
         casteljau::hodograph(points(), h);
         return h;
     }
+    /// First derivative at t.
     constexpr Vec2 deriv(double t) const {
         const auto h = hodograph();
         return decasteljau_eval(std::span<const Vec2, N>(h), t);
     }
+    /// Second derivative at t.
     constexpr Vec2 deriv2(double t) const {
         if constexpr (N == 1) {
             return {};
@@ -74,34 +87,40 @@ struct Bez {
         }
     }
 
+    /// The pieces over [0, t] and [t, 1], by de Casteljau.
     constexpr std::array<Bez, 2> split(double t) const {
         std::array<Bez, 2> halves{};
         decasteljau_split(points(), t, std::span<Point, N + 1>(halves[0].p),
                           std::span<Point, N + 1>(halves[1].p));
         return halves;
     }
+    /// The piece over [t0, t1], as a curve over [0, 1].
     constexpr Bez subsegment(double t0, double t1) const {
         Bez s{};
         decasteljau_subsegment(points(), t0, t1, std::span<Point, N + 1>(s.p));
         return s;
     }
+    /// The same curve one degree higher (degree elevation).
     constexpr Bez<N + 1> elevate() const requires(N < 3) {
         Bez<N + 1> e{};
         elevate_degree(points(), e.p);
         return e;
     }
+    /// The curve mapped by m (its control points mapped).
     constexpr Bez transformed(const Affine& m) const {
         Bez r{};
         for (int i = 0; i <= N; ++i) r.p[i] = m * p[i];
         return r;
     }
+    /// The control points.
     constexpr const std::array<Point, N + 1>& control_points() const { return p; }
+    /// Box of the control points, which holds the curve (convex hull property).
     constexpr Rect control_bounds() const {
         Rect r = Rect::empty();
         for (Point q : p) r = r.united(q);
         return r;
     }
-    // Tight box: the end points plus the curve at every root of x'(t) and y'(t).
+    /// Tight box: the end points plus the curve at every root of x'(t) and y'(t).
     Rect bounds() const {
         Rect r = Rect::from_points(p[0], p[N]);
         const auto h = hodograph();
@@ -115,7 +134,9 @@ struct Bez {
         return r;
     }
 
+    /// The control points as a span.
     constexpr std::span<const Point, N + 1> points() const { return p; }
+    /// Exact equality of every member.
     constexpr bool operator==(const Bez&) const = default;
 };
 

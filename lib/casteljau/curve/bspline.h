@@ -25,41 +25,52 @@
 
 namespace casteljau {
 
+/// A polynomial B-spline curve of any degree and any valid knot vector.
 struct BSpline {
     int degree = 3;
     std::vector<Point> points;
     std::vector<double> knots;
 
-    // Empty when valid; otherwise what is wrong, in words.
+    /// Empty when valid; otherwise what is wrong, in words.
     std::string validate() const;
+    /// Start of the parameter domain, the knot t_p.
     double domain_start() const { return knots[std::size_t(degree)]; }
+    /// End of the parameter domain, the knot t_n.
     double domain_end() const { return knots[points.size()]; }
-    // u is clamped to the domain.
+    /// u is clamped to the domain.
     Point eval(double u) const;
-    // Inserts u once (domain_start <= u <= domain_end); the curve is unchanged.
+    /// Inserts u once (domain_start <= u <= domain_end); the curve is unchanged.
     void insert_knot(double u);
+    /// The curve as Bezier pieces, one per nonempty knot span.
     std::vector<Bezier> to_beziers() const;
 };
 
+/// A rational B-spline (NURBS) curve: a B-spline of homogeneous points.
 struct Nurbs {
     int degree = 2;
     std::vector<Point> points;
     std::vector<double> weights;
     std::vector<double> knots;
 
-    // The exact circle as nine control points of degree 2 (NURBS Book 7.5).
+    /// The exact circle as nine control points of degree 2 (NURBS Book 7.5).
     static Nurbs circle(Point center, double radius);
 
+    /// Empty when valid; otherwise what is wrong, in words.
     std::string validate() const;
+    /// Start of the parameter domain, the knot t_p.
     double domain_start() const { return knots[std::size_t(degree)]; }
+    /// End of the parameter domain, the knot t_n.
     double domain_end() const { return knots[points.size()]; }
+    /// The point at parameter u, clamped to the domain (de Boor).
     Point eval(double u) const;
+    /// Inserts the knot u once (Boehm); the curve is unchanged.
     void insert_knot(double u);
+    /// The curve as Bezier pieces, one per nonempty knot span.
     std::vector<RationalBezier> to_beziers() const;
 };
 
-// Knot vector t_0..t_{n+p} with p+1 equal knots at each end (so the curve
-// interpolates its end points) and uniform interior knots on [0, 1].
+/// Knot vector t_0..t_{n+p} with p+1 equal knots at each end (so the curve
+/// interpolates its end points) and uniform interior knots on [0, 1].
 std::vector<double> clamped_uniform_knots(int degree, std::size_t point_count);
 
 } // namespace casteljau

@@ -22,10 +22,10 @@
 
 namespace casteljau {
 
-// Highest degree of a general Bezier curve. Degree 24 is far beyond what
-// drawing and CAD data use (NURBS in practice stop at 7 to 9); beyond about
-// 25 the binomial coefficients of the Bernstein and power forms lose more
-// than half of double's mantissa, so higher degrees would be a false promise.
+/// Highest degree of a general Bezier curve. Degree 24 is far beyond what
+/// drawing and CAD data use (NURBS in practice stop at 7 to 9); beyond about
+/// 25 the binomial coefficients of the Bernstein and power forms lose more
+/// than half of double's mantissa, so higher degrees would be a false promise.
 inline constexpr int kMaxDegree = 24;
 inline constexpr std::size_t kMaxPoints = kMaxDegree + 1;
 
@@ -44,7 +44,7 @@ constexpr T decasteljau_eval(std::span<const T, E> p, double t) noexcept {
     return q[0];
 }
 
-// Writes the control polygons of [0, t] and [t, 1]; left/right may not alias p.
+/// Writes the control polygons of [0, t] and [t, 1]; left/right may not alias p.
 template <class T, std::size_t E>
 constexpr void decasteljau_split(std::span<const T, E> p, double t, std::span<T, E> left,
                                  std::span<T, E> right) noexcept {
@@ -60,11 +60,11 @@ constexpr void decasteljau_split(std::span<const T, E> p, double t, std::span<T,
     }
 }
 
-// Control polygon of the piece [t0, t1]; t0 > t1 gives the piece reversed.
-// Two splits, ordered so that the second split's parameter is a ratio with a
-// denominator of at least 1/2: for lo < hi < 1/2, split at lo and then the
-// right part at (hi - lo) / (1 - lo); otherwise split at hi and then the left
-// part at lo / hi.
+/// Control polygon of the piece [t0, t1]; t0 > t1 gives the piece reversed.
+/// Two splits, ordered so that the second split's parameter is a ratio with a
+/// denominator of at least 1/2: for lo < hi < 1/2, split at lo and then the
+/// right part at (hi - lo) / (1 - lo); otherwise split at hi and then the left
+/// part at lo / hi.
 template <class T, std::size_t E>
 constexpr void decasteljau_subsegment(std::span<const T, E> p, double t0, double t1,
                                       std::span<T, E> out) noexcept {
@@ -83,16 +83,16 @@ constexpr void decasteljau_subsegment(std::span<const T, E> p, double t0, double
         for (std::size_t i = 0, j = n - 1; i < j; ++i, --j) std::swap(out[i], out[j]);
 }
 
-// Hodograph: the derivative of a degree-n curve is the degree-(n-1) Bezier curve
-// with vector coefficients n (P_{i+1} - P_i).
+/// Hodograph: the derivative of a degree-n curve is the degree-(n-1) Bezier curve
+/// with vector coefficients n (P_{i+1} - P_i).
 template <std::size_t E>
 constexpr void hodograph(std::span<const Point, E> p, std::span<Vec2> out) noexcept {
     const std::size_t n = p.size() - 1;
     for (std::size_t i = 0; i < n; ++i) out[i] = (p[i + 1] - p[i]) * double(n);
 }
 
-// Degree elevation (Farin 6.1): Q_i = (i/(n+1)) P_{i-1} + (1 - i/(n+1)) P_i.
-// `out` has p.size() + 1 entries.
+/// Degree elevation (Farin 6.1): Q_i = (i/(n+1)) P_{i-1} + (1 - i/(n+1)) P_i.
+/// `out` has p.size() + 1 entries.
 template <std::size_t E>
 constexpr void elevate_degree(std::span<const Point, E> p, std::span<Point> out) noexcept {
     const std::size_t n = p.size() - 1;
@@ -101,14 +101,14 @@ constexpr void elevate_degree(std::span<const Point, E> p, std::span<Point> out)
     for (std::size_t i = 1; i <= n; ++i) out[i] = lerp(p[i], p[i - 1], double(i) / double(n + 1));
 }
 
-// C(n, k) as a double; exact for every n <= kMaxDegree.
+/// C(n, k) as a double; exact for every n <= kMaxDegree.
 constexpr double binomial(int n, int k) noexcept {
     double r = 1;
     for (int i = 1; i <= k; ++i) r = r * double(n - k + i) / double(i);
     return r;
 }
 
-// Direct Bernstein sum, with t^i and (1-t)^(n-i) built incrementally.
+/// Direct Bernstein sum, with t^i and (1-t)^(n-i) built incrementally.
 template <std::size_t E>
 constexpr Point bernstein_eval(std::span<const Point, E> p, double t) noexcept {
     const int n = int(p.size()) - 1;
@@ -125,9 +125,9 @@ constexpr Point bernstein_eval(std::span<const Point, E> p, double t) noexcept {
     return {x, y};
 }
 
-// Power-basis (monomial) coefficients: B(t) = c0 + sum_{j>=1} c_j t^j with
-// c_j = C(n,j) sum_{i<=j} (-1)^(j-i) C(j,i) P_i (the Bernstein-to-power basis
-// change matrix, Farin 4.3). `c` receives c_1..c_n.
+/// Power-basis (monomial) coefficients: B(t) = c0 + sum_{j>=1} c_j t^j with
+/// c_j = C(n,j) sum_{i<=j} (-1)^(j-i) C(j,i) P_i (the Bernstein-to-power basis
+/// change matrix, Farin 4.3). `c` receives c_1..c_n.
 template <std::size_t E>
 constexpr Point power_coefficients(std::span<const Point, E> p, std::span<Vec2> c) noexcept {
     const int n = int(p.size()) - 1;
@@ -142,7 +142,7 @@ constexpr Point power_coefficients(std::span<const Point, E> p, std::span<Vec2> 
     return p[0];
 }
 
-// Horner evaluation of c0 + c_1 t + ... + c_n t^n.
+/// Horner evaluation of c0 + c_1 t + ... + c_n t^n.
 constexpr Point horner_eval(Point c0, std::span<const Vec2> c, double t) noexcept {
     Vec2 acc{};
     for (std::size_t j = c.size(); j > 0; --j) acc = (acc + c[j - 1]) * t;

@@ -29,69 +29,83 @@ Point segment_end(const Segment& s);
 Point segment_eval(const Segment& s, double t);
 Vec2 segment_deriv(const Segment& s, double t);
 Vec2 segment_deriv2(const Segment& s, double t);
-// Direction in which the segment leaves its start / arrives at its end; where
-// the derivative vanishes (coincident control points) the limit direction is
-// used. Zero only for a segment collapsed to a point.
+/// Direction in which the segment leaves its start / arrives at its end; where
+/// the derivative vanishes (coincident control points) the limit direction is
+/// used. Zero only for a segment collapsed to a point.
 Vec2 segment_start_tangent(const Segment& s);
 Vec2 segment_end_tangent(const Segment& s);
 Rect segment_bounds(const Segment& s);
-Rect segment_control_bounds(const Segment& s); // holds the segment (convex hull property)
+Rect segment_control_bounds(const Segment& s); ///< holds the segment (convex hull property)
 Segment segment_subsegment(const Segment& s, double t0, double t1);
 Segment segment_transformed(const Segment& s, const Affine& m);
 
+/// A start point and a chain of segments, each starting where the last ended.
 struct Subpath {
     Point start;
     std::vector<Segment> segments;
     bool closed = false;
 };
 
-// How smoothly one segment joins the next, from weakest to strongest; each
-// level implies the ones before it (G1: same position and unit tangent; C1:
-// same first derivative; C2: same first and second derivatives).
+/// How smoothly one segment joins the next, from weakest to strongest; each
+/// level implies the ones before it (G1: same position and unit tangent; C1:
+/// same first derivative; C2: same first and second derivatives).
 enum class Continuity { None, C0, G1, C1, C2 };
 const char* to_string(Continuity c);
 
-// Classifies the joint a(1) -> b(0). `tol` is relative to the size of the
-// quantities compared (positions to the segments' extent, derivatives to
-// their own length): a joint is C1 if |a'(1) - b'(0)| <= tol * max(1, |a'(1)|).
+/// Classifies the joint a(1) -> b(0). `tol` is relative to the size of the
+/// quantities compared (positions to the segments' extent, derivatives to
+/// their own length): a joint is C1 if |a'(1) - b'(0)| <= tol * max(1, |a'(1)|).
 Continuity joint_continuity(const Segment& a, const Segment& b, double tol = 1e-9);
 
+/// The 2D drawing API: subpaths of lines, quadratics, cubics and conics.
 class Path {
   public:
+    /// Starts a new subpath at p.
     void move_to(Point p);
+    /// Appends a line from the current point to p.
     void line_to(Point p);
+    /// Appends a quadratic with control point c ending at p.
     void quad_to(Point c, Point p);
+    /// Appends a cubic with control points c1, c2 ending at p.
     void cubic_to(Point c1, Point c2, Point p);
+    /// Appends a conic with control point c and weight w (> 0) ending at p.
     void conic_to(Point c, Point p, double w);
-    // SVG elliptical arc from the current point (appendix F.6): exact conics.
+    /// SVG elliptical arc from the current point (appendix F.6): exact conics.
     void arc_to(Vec2 radii, double x_rotation_deg, bool large_arc, bool sweep, Point p);
+    /// Closes the subpath (adding the closing line when it does not end at its start).
     void close();
-    // Appends a segment as it is. It should start at the current point; with
-    // no open subpath, one starts at the segment's start.
+    /// Appends a segment as it is. It should start at the current point; with
+    /// no open subpath, one starts at the segment's start.
     void append(const Segment& s);
 
+    /// Where the next segment starts.
     Point current_point() const { return current_; }
+    /// The subpaths, in drawing order.
     const std::vector<Subpath>& subpaths() const { return subpaths_; }
+    /// Whether the path has no subpath.
     bool empty() const { return subpaths_.empty(); }
+    /// Total number of segments over all subpaths.
     std::size_t segment_count() const;
 
+    /// Maps every segment by m (exact: control points are mapped).
     void transform(const Affine& m);
-    // Tight bounds (curve extrema), and the cheaper bounds of all control
-    // points, which contain the path too (convex hull property).
+    /// Tight bounds (curve extrema), and the cheaper bounds of all control
+    /// points, which contain the path too (convex hull property).
     Rect bounds() const;
+    /// Box of the control points, which holds the curve (convex hull property).
     Rect control_bounds() const;
 
-    // The subpath's global parameterisation; u is clamped to [0, segments].
+    /// The subpath's global parameterisation; u is clamped to [0, segments].
     Point eval(std::size_t subpath, double u) const;
-    // Continuity of every joint of a subpath: joint i is segment i -> i+1; a
-    // closed subpath has one more, last -> first.
+    /// Continuity of every joint of a subpath: joint i is segment i -> i+1; a
+    /// closed subpath has one more, last -> first.
     std::vector<Continuity> continuity(std::size_t subpath, double tol = 1e-9) const;
 
   private:
     Rect united_bounds(Rect (*of)(const Segment&)) const;
     std::vector<Subpath> subpaths_;
     Point current_{};
-    bool open_ = false; // the last subpath accepts segments
+    bool open_ = false; ///< the last subpath accepts segments
 };
 
 } // namespace casteljau

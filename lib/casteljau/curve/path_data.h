@@ -22,14 +22,16 @@
 
 namespace casteljau {
 
+/// Where SVG path data went wrong, and what was wrong.
 struct PathDataError {
-    std::size_t offset = 0; // byte offset into the path data
+    std::size_t offset = 0; ///< byte offset into the path data
     std::string message;
 };
 
+/// Parsed path data: the path up to any error, and the error.
 struct PathDataResult {
-    Path path;                          // everything before the error
-    std::optional<PathDataError> error; // empty when the whole string parsed
+    Path path;                          ///< everything before the error
+    std::optional<PathDataError> error; ///< empty when the whole string parsed
 };
 
 PathDataResult parse_path_data(std::string_view data);

@@ -19,16 +19,16 @@
 
 namespace casteljau {
 
-// Writes the real roots (0, 1 or 2) into `roots`, ascending; returns how many.
+/// Writes the real roots (0, 1 or 2) into `roots`, ascending; returns how many.
 int solve_quadratic(double a, double b, double c, double roots[2]) noexcept;
 
-// Parameters are resolved to 2^-40 (about 1e-12): far below what a double
-// coordinate of a curve can distinguish at the sizes this library draws.
+/// Parameters are resolved to 2^-40 (about 1e-12): far below what a double
+/// coordinate of a curve can distinguish at the sizes this library draws.
 inline constexpr int kRootDepth = 40;
 
-// Roots of sum_i coeff[i] B_i^n(t) in [0, 1], ascending, at most out.size()
-// (a degree-n polynomial has at most n); returns how many were written.
-// Precondition: coeff.size() <= kMaxPoints (see decasteljau.h).
+/// Roots of sum_i coeff[i] B_i^n(t) in [0, 1], ascending, at most out.size()
+/// (a degree-n polynomial has at most n); returns how many were written.
+/// Precondition: coeff.size() <= kMaxPoints (see decasteljau.h).
 int bernstein_roots(std::span<const double> coeff, std::span<double> out) noexcept;
 
 } // namespace casteljau

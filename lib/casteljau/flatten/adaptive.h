@@ -48,33 +48,37 @@
 
 namespace casteljau {
 
+/// The constants of the adaptive flattener: depth cap and stack size.
 struct AdaptiveParams {
-    // The depth cap: minimal chord length in parameter space is 2^-kMaxDepth.
+    /// The depth cap: minimal chord length in parameter space is 2^-kMaxDepth.
     static constexpr int kMaxDepth = 20;
     static constexpr double kMinStep = 1.0 / double(1 << kMaxDepth);
-    // A probe with deviation in [kAccept tol, tol] is taken at once. 0.9 costs
-    // at most 1/sqrt(0.9) - 1 = 5% more chords than exact equality, and keeps
-    // the mean probe count near 2 (bench/flatten reports both).
+    /// A probe with deviation in [kAccept tol, tol] is taken at once. 0.9 costs
+    /// at most 1/sqrt(0.9) - 1 = 5% more chords than exact equality, and keeps
+    /// the mean probe count near 2 (bench/flatten reports both).
     static constexpr double kAccept = 0.9;
-    // Aim inside the window rather than at its top edge, so rounding in the
-    // model does not push probes just above tol.
+    /// Aim inside the window rather than at its top edge, so rounding in the
+    /// model does not push probes just above tol.
     static constexpr double kTarget = 0.95;
-    // Probes per chord before the largest flat one so far is taken.
+    /// Probes per chord before the largest flat one so far is taken.
     static constexpr int kMaxProbes = 6;
-    // The remainder is tested as a whole when the predicted chord is at least
-    // 1/kRestCheck of it. Predictions err by well under 2x except where the
-    // curvature changes abruptly, where a skipped test costs one extra chord.
+    /// The remainder is tested as a whole when the predicted chord is at least
+    /// 1/kRestCheck of it. Predictions err by well under 2x except where the
+    /// curvature changes abruptly, where a skipped test costs one extra chord.
     static constexpr double kRestCheck = 2.0;
 };
 
+/// The adaptive flattener as a range of FlatVertex (see flatten_adaptive for the callback form).
 template <class Curve>
 class AdaptiveFlattener {
   public:
+    /// The flattener constants.
     using P = AdaptiveParams;
 
+    /// Flattens `c` to within `tolerance` (same units as the curve).
     AdaptiveFlattener(const Curve& c, double tolerance) noexcept : rest_(c), tol_(tolerance) {}
 
-    // Writes the next vertex; false once the end point has been emitted.
+    /// Writes the next vertex; false once the end point has been emitted.
     bool next(FlatVertex& out) noexcept {
         if (done_) return false;
         const double span = 1.0 - t0_;
@@ -102,29 +106,41 @@ class AdaptiveFlattener {
         return true;
     }
 
-    // Input-range form: `for (FlatVertex v : AdaptiveFlattener(c, tol))`.
+    /// Input-range form: `for (FlatVertex v : AdaptiveFlattener(c, tol))`.
     class iterator {
       public:
+        /// Input iterator tag: each vertex is produced once.
         using iterator_category = std::input_iterator_tag;
+        /// Iterated values are vertices.
         using value_type = FlatVertex;
+        /// Distance type (unused by an input iterator).
         using difference_type = std::ptrdiff_t;
+        /// Pointer to a vertex.
         using pointer = const FlatVertex*;
+        /// Reference to a vertex.
         using reference = const FlatVertex&;
         iterator() = default;
+        /// An iterator at the first vertex after the start.
         explicit iterator(AdaptiveFlattener* f) : f_(f) { ++*this; }
+        /// The current vertex.
         const FlatVertex& operator*() const { return v_; }
+        /// Advances to the next vertex.
         iterator& operator++() {
             if (!f_->next(v_)) f_ = nullptr;
             return *this;
         }
+        /// Advances to the next vertex (post-increment, returns nothing).
         void operator++(int) { ++*this; }
+        /// Exact equality of every member.
         bool operator==(const iterator& o) const { return f_ == o.f_; }
 
       private:
         AdaptiveFlattener* f_ = nullptr;
         FlatVertex v_{};
     };
+    /// The first vertex after the curve's start (the start itself is not emitted).
     iterator begin() { return iterator(this); }
+    /// The end sentinel.
     iterator end() { return iterator(); }
 
   private:
@@ -133,9 +149,9 @@ class AdaptiveFlattener {
         double u = 0, dev = 0;
     };
 
-    // When the remainder ends in two chords (prefix and suffix both flat), a
-    // greedy prefix leaves a sliver as the last chord; two equal halves cost the
-    // same count and spread the deviation, so take them when both are flat.
+    /// When the remainder ends in two chords (prefix and suffix both flat), a
+    /// greedy prefix leaves a sliver as the last chord; two equal halves cost the
+    /// same count and spread the deviation, so take them when both are flat.
     void balance_last_two(Split& s) const noexcept {
         if (s.u <= 0.5 || chord_deviation(s.halves[1]) > tol_) return;
         const auto halves = rest_.split(0.5);
@@ -143,8 +159,8 @@ class AdaptiveFlattener {
         if (d0 <= tol_ && d1 <= tol_) s = {halves, 0.5, std::max(d0, d1)};
     }
 
-    // The safeguarded secant search described at the top of the file, from a
-    // first probe u; `min_u` is the depth cap in the remainder's parameter.
+    /// The safeguarded secant search described at the top of the file, from a
+    /// first probe u; `min_u` is the depth cap in the remainder's parameter.
     Split flat_prefix(double u, double min_u) const noexcept {
         Split best{};
         bool have = false;
@@ -177,12 +193,12 @@ class AdaptiveFlattener {
 
     Curve rest_;
     double tol_;
-    double t0_ = 0;   // curve parameter at rest_.start()
-    double hint_ = 0; // predicted parameter length of the next chord (0: none)
+    double t0_ = 0;   ///< curve parameter at rest_.start()
+    double hint_ = 0; ///< predicted parameter length of the next chord (0: none)
     bool done_ = false;
 };
 
-// Sink form: sink(FlatVertex) for every vertex after the start.
+/// Sink form: sink(FlatVertex) for every vertex after the start.
 template <class Curve, class Sink>
 void flatten_adaptive(const Curve& c, double tolerance, Sink&& sink) noexcept {
     AdaptiveFlattener<Curve> f(c, tolerance);

@@ -52,7 +52,7 @@ double piece_error(const Curve& c, double ta, double tb, Point a, Point b) {
     return std::max({best_d, f1, f2});
 }
 
-// `start` is the curve's start; `vertices` what a flattener emitted after it.
+/// `start` is the curve's start; `vertices` what a flattener emitted after it.
 template <class Curve>
 double polyline_error(const Curve& c, Point start, std::span<const FlatVertex> vertices) {
     double err = 0, ta = 0;
@@ -76,9 +76,9 @@ double uniform_error(const Curve& c, int n) {
     return polyline_error(c, c.start(), v);
 }
 
-// The smallest N whose uniform polyline measures within `tolerance`, searched
-// below `upper` (which must meet it: Wang's bound does). Measured error is
-// decreasing in N for all but pathological curves; bisection assumes it.
+/// The smallest N whose uniform polyline measures within `tolerance`, searched
+/// below `upper` (which must meet it: Wang's bound does). Measured error is
+/// decreasing in N for all but pathological curves; bisection assumes it.
 template <class Curve>
 int best_uniform_segments(const Curve& c, double tolerance, int upper) {
     int lo = 0, hi = std::max(upper, 1); // err(lo) > tol (or lo == 0), err(hi) <= tol

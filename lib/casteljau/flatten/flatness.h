@@ -53,7 +53,7 @@ double chord_deviation(const HConic& c) noexcept;
 double chord_deviation(const Bezier& c) noexcept;
 double chord_deviation(const RationalBezier& c) noexcept;
 
-// The hull bound for every curve type (the textbook flatness test).
+/// The hull bound for every curve type (the textbook flatness test).
 template <int N>
 double hull_deviation(const Bez<N>& c) noexcept {
     return hull_deviation(c.points());

@@ -14,40 +14,41 @@
 namespace casteljau {
 
 enum class FlattenMethod {
-    Adaptive, // greedy flat prefixes (adaptive.h): the default
-    Uniform,  // N segments in advance (uniform.h)
-    Halving,  // textbook midpoint subdivision (halving.h): a baseline
-    // Uniform with, per curve, the smallest N whose measured error meets the
-    // tolerance (error.h): uniform sampling at its best, for comparisons at
-    // equal error. The first time a curve is seen it measures candidate N;
-    // after that the N is remembered (memoized_best_uniform below).
+    Adaptive, ///< greedy flat prefixes (adaptive.h): the default
+    Uniform,  ///< N segments in advance (uniform.h)
+    Halving,  ///< textbook midpoint subdivision (halving.h): a baseline
+    /// Uniform with, per curve, the smallest N whose measured error meets the
+    /// tolerance (error.h): uniform sampling at its best, for comparisons at
+    /// equal error. The first time a curve is seen it measures candidate N;
+    /// after that the N is remembered (memoized_best_uniform below).
     UniformBest,
 };
 
+/// How to flatten: the tolerance, the method, and a segment count for uniform sampling.
 struct FlattenOptions {
-    double tolerance = 0.25; // device pixels; > 0
+    double tolerance = 0.25; ///< device pixels; > 0
     FlattenMethod method = FlattenMethod::Adaptive;
-    int segments = 0; // Uniform only: N per curve; 0 = the smallest that Wang's bound allows
+    int segments = 0; ///< Uniform only: N per curve; 0 = the smallest that Wang's bound allows
 };
 
-// The form a curve is subdivided in: itself, except conics, which subdivide in
-// homogeneous form so that the reported parameters stay the conic's own.
+/// The form a curve is subdivided in: itself, except conics, which subdivide in
+/// homogeneous form so that the reported parameters stay the conic's own.
 template <class Curve>
 const Curve& subdivision_form(const Curve& c) {
     return c;
 }
 inline HConic subdivision_form(const Conic& c) { return HConic::from(c); }
 
-// Depth of the culling subdivision that fills (raster/path_edges.h) and
-// strokes (stroke/stroker.cpp) do before flattening only what is near the
-// image: 2^-40 of a 1e9 px curve is ~1e-3 px, so deeper never helps, and a
-// piece still over 4 image sizes at this depth is taken as its chord.
+/// Depth of the culling subdivision that fills (raster/path_edges.h) and
+/// strokes (stroke/stroker.cpp) do before flattening only what is near the
+/// image: 2^-40 of a 1e9 px curve is ~1e-3 px, so deeper never helps, and a
+/// piece still over 4 image sizes at this depth is taken as its chord.
 inline constexpr int kCullDepth = 40;
 
-// UniformBest's N per curve, memoized per thread (keyed by the curve's exact
-// control points and the tolerance), so that repeated renders for a
-// comparison time the sampling, not the search. A comparison tool: the memo
-// is dropped whole once it holds kUniformMemoSize curves.
+/// UniformBest's N per curve, memoized per thread (keyed by the curve's exact
+/// control points and the tolerance), so that repeated renders for a
+/// comparison time the sampling, not the search. A comparison tool: the memo
+/// is dropped whole once it holds kUniformMemoSize curves.
 inline constexpr std::size_t kUniformMemoSize = 1 << 20;
 
 template <class Curve>

@@ -15,21 +15,23 @@
 
 namespace casteljau {
 
+/// A flattened subpath: its vertices, and whether it is closed.
 struct Polyline {
     std::vector<Point> points;
     bool closed = false;
 };
 
+/// Counts and errors of a flattening, for --stats and the benchmarks.
 struct FlattenStats {
-    std::size_t curves_in = 0;    // segments of the path, lines included
-    std::size_t segments_out = 0; // polyline edges
-    // Deepest equivalent subdivision level: ceil(log2(1 / shortest parameter step)).
+    std::size_t curves_in = 0;    ///< segments of the path, lines included
+    std::size_t segments_out = 0; ///< polyline edges
+    /// Deepest equivalent subdivision level: ceil(log2(1 / shortest parameter step)).
     int max_depth = 0;
-    double max_error = 0; // device px; measured only when asked for
+    double max_error = 0; ///< device px; measured only when asked for
 };
 
-// Appends one polyline per subpath to `out`. With `measure_error` the exact
-// error measure of error.h is taken on every curve (costly: for stats and tests).
+/// Appends one polyline per subpath to `out`. With `measure_error` the exact
+/// error measure of error.h is taken on every curve (costly: for stats and tests).
 FlattenStats flatten_path(const Path& path, const Affine& to_device, const FlattenOptions& options,
                           std::vector<Polyline>& out, bool measure_error = false);
 

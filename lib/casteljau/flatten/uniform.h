@@ -27,8 +27,8 @@
 
 namespace casteljau {
 
-// Segment counts are capped so a hostile curve cannot ask for unbounded work;
-// 2^20 matches the adaptive flattener's depth cap.
+/// Segment counts are capped so a hostile curve cannot ask for unbounded work;
+/// 2^20 matches the adaptive flattener's depth cap.
 inline constexpr int kMaxUniformSegments = 1 << 20;
 
 int wang_segments(std::span<const Point> control, double tolerance) noexcept;
@@ -40,8 +40,8 @@ inline int wang_segments(const Bezier& c, double tolerance) noexcept {
     return wang_segments(c.points(), tolerance);
 }
 int wang_segments(const Conic& c, double tolerance) noexcept;
-// No closed form is used for rational curves of higher degree: the smallest N
-// whose measured error meets the tolerance (error.h) is taken instead.
+/// No closed form is used for rational curves of higher degree: the smallest N
+/// whose measured error meets the tolerance (error.h) is taken instead.
 int wang_segments(const RationalBezier& c, double tolerance);
 
 template <class Curve, class Sink>

@@ -7,9 +7,11 @@
 
 namespace casteljau {
 
+/// A vertex of a flattened curve and the curve parameter it lies at.
 struct FlatVertex {
     Point p;
     double t = 0;
+    /// Exact equality of every member.
     constexpr bool operator==(const FlatVertex&) const = default;
 };
 

@@ -18,15 +18,15 @@
 
 namespace casteljau {
 
-// Where a coordinate running from `from` to `to` reaches v: (v - from) /
-// (to - from), computed from halved differences, so finite for any finite
-// arguments (to - from itself can overflow) and equal to the plain ratio
-// otherwise (halving is exact).
+/// Where a coordinate running from `from` to `to` reaches v: (v - from) /
+/// (to - from), computed from halved differences, so finite for any finite
+/// arguments (to - from itself can overflow) and equal to the plain ratio
+/// otherwise (halving is exact).
 inline double crossing_parameter(double v, double from, double to) {
     return (0.5 * v - 0.5 * from) / (0.5 * to - 0.5 * from);
 }
 
-// The part of segment ab inside `box` (borders included), or nothing.
+/// The part of segment ab inside `box` (borders included), or nothing.
 inline std::optional<std::array<Point, 2>> clip_line(Point a, Point b, const Rect& box) {
     // Each end: its parameter and, when a bound set it, that bound's axis and
     // value, which the clipped point takes exactly. The other coordinate is

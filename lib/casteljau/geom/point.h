@@ -11,50 +11,70 @@
 
 namespace casteljau {
 
+/// A 2D displacement: the difference of two points.
 struct Vec2 {
     double x = 0, y = 0;
 
+    /// Sum of vectors.
     constexpr Vec2 operator+(Vec2 v) const { return {x + v.x, y + v.y}; }
+    /// Difference of vectors.
     constexpr Vec2 operator-(Vec2 v) const { return {x - v.x, y - v.y}; }
+    /// The opposite vector.
     constexpr Vec2 operator-() const { return {-x, -y}; }
+    /// Scaled by s.
     constexpr Vec2 operator*(double s) const { return {x * s, y * s}; }
+    /// Divided by s.
     constexpr Vec2 operator/(double s) const { return {x / s, y / s}; }
+    /// Adds v.
     constexpr Vec2& operator+=(Vec2 v) { return *this = *this + v; }
+    /// Subtracts v.
     constexpr Vec2& operator-=(Vec2 v) { return *this = *this - v; }
+    /// Scales by s.
     constexpr Vec2& operator*=(double s) { return *this = *this * s; }
+    /// Exact equality of every member.
     constexpr bool operator==(const Vec2&) const = default;
 
+    /// Dot product.
     constexpr double dot(Vec2 v) const { return x * v.x + y * v.y; }
-    // z component of the 3D cross product: positive when v turns left of *this.
+    /// z component of the 3D cross product: positive when v turns left of *this.
     constexpr double cross(Vec2 v) const { return x * v.y - y * v.x; }
+    /// Squared length.
     constexpr double length_sq() const { return dot(*this); }
-    // sqrt of the sum of squares, not std::hypot: hypot guards against overflow
-    // beyond 1e154, which finite geometry here never reaches, at ~10x the cost.
+    /// sqrt of the sum of squares, not std::hypot: hypot guards against overflow
+    /// beyond 1e154, which finite geometry here never reaches, at ~10x the cost.
     double length() const { return std::sqrt(x * x + y * y); }
-    // The unit vector along *this; the zero vector stays zero.
+    /// The unit vector along *this; the zero vector stays zero.
     Vec2 normalized() const {
         const double l = length();
         return l > 0 ? *this / l : Vec2{};
     }
-    // Left-hand perpendicular (rotated +90 degrees in a y-up frame).
+    /// Left-hand perpendicular (rotated +90 degrees in a y-up frame).
     constexpr Vec2 perp() const { return {-y, x}; }
+    /// Whether every component is finite.
     bool is_finite() const { return std::isfinite(x) && std::isfinite(y); }
 };
 
 constexpr Vec2 operator*(double s, Vec2 v) { return v * s; }
 
+/// A 2D position: point - point is a Vec2, point + vector a Point, point + point nothing.
 struct Point {
     double x = 0, y = 0;
 
+    /// The vector from p to this point.
     constexpr Vec2 operator-(Point p) const { return {x - p.x, y - p.y}; }
+    /// This point moved by v.
     constexpr Point operator+(Vec2 v) const { return {x + v.x, y + v.y}; }
+    /// This point moved by -v.
     constexpr Point operator-(Vec2 v) const { return {x - v.x, y - v.y}; }
+    /// Moves this point by v.
     constexpr Point& operator+=(Vec2 v) { return *this = *this + v; }
+    /// Exact equality of every member.
     constexpr bool operator==(const Point&) const = default;
 
-    // The displacement from the origin: for the rare place where a point's
-    // coordinates are used as a vector (power-basis coefficients, centroids).
+    /// The displacement from the origin: for the rare place where a point's
+    /// coordinates are used as a vector (power-basis coefficients, centroids).
     constexpr Vec2 to_vec() const { return {x, y}; }
+    /// Whether every component is finite.
     bool is_finite() const { return std::isfinite(x) && std::isfinite(y); }
 };
 
@@ -72,7 +92,7 @@ constexpr Point midpoint(Point a, Point b) { return {0.5 * (a.x + b.x), 0.5 * (a
 
 inline double distance(Point a, Point b) { return (b - a).length(); }
 
-// Distance from p to the closed segment [a, b]; a degenerate segment is a point.
+/// Distance from p to the closed segment [a, b]; a degenerate segment is a point.
 inline double distance_to_segment(Point p, Point a, Point b) {
     const Vec2 ab = b - a, ap = p - a;
     const double len_sq = ab.length_sq();

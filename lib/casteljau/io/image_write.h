@@ -14,14 +14,15 @@
 
 namespace casteljau {
 
+/// Float RGBA pixels to write: a view, not owned.
 struct ImageView {
     int width = 0, height = 0;
-    // width * height RGBA pixels, row-major from the top, un-premultiplied,
-    // values in [0, 1] already in the output's encoding (sRGB for 8-bit files).
+    /// width * height RGBA pixels, row-major from the top, un-premultiplied,
+    /// values in [0, 1] already in the output's encoding (sRGB for 8-bit files).
     std::span<const float> rgba;
 };
 
-// Returns an empty string on success, otherwise what went wrong (with the path).
+/// Returns an empty string on success, otherwise what went wrong (with the path).
 std::string write_image_atomic(const std::string& path, const ImageView& image);
 
 } // namespace casteljau

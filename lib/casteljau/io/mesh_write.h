@@ -13,8 +13,8 @@
 
 namespace casteljau {
 
-// The format follows the extension (.obj or .ply). Returns an empty string on
-// success, otherwise what went wrong (with the path).
+/// The format follows the extension (.obj or .ply). Returns an empty string on
+/// success, otherwise what went wrong (with the path).
 std::string write_mesh_atomic(const std::string& path, const Mesh& mesh);
 
 } // namespace casteljau

@@ -29,22 +29,24 @@
 
 namespace casteljau {
 
+/// Limits on patch files (size, patch count, nesting), all checked with located errors.
 struct PatchLimits {
-    std::size_t max_file_bytes = std::size_t(256) << 20; // 256 MiB
+    std::size_t max_file_bytes = std::size_t(256) << 20; ///< 256 MiB
     std::size_t max_patches = 1'000'000;
-    int max_grid_side = 1025; // control points along one side of a .map or B-spline grid
+    int max_grid_side = 1025; ///< control points along one side of a .map or B-spline grid
 };
 
 enum class PatchFormat { Bpt, QuakeMap, Json };
 
+/// A read patch file: the model and camera, or a located error.
 struct PatchFile {
-    std::optional<PatchModel> model; // empty on error
-    std::optional<LookAt> camera;    // from a .json scene that has one
-    std::string error;               // "file:line: what"
-    bool io_error = false;           // the file could not be read (not its content)
+    std::optional<PatchModel> model; ///< empty on error
+    std::optional<LookAt> camera;    ///< from a .json scene that has one
+    std::string error;               ///< "file:line: what"
+    bool io_error = false;           ///< the file could not be read (not its content)
 };
 
-// The format follows the extension (.bpt, .map, .json); anything else is an error.
+/// The format follows the extension (.bpt, .map, .json); anything else is an error.
 PatchFile read_patch_file(const std::string& path, const PatchLimits& limits = {});
 PatchFile parse_patches(std::string_view text, PatchFormat format, const std::string& name,
                         const PatchLimits& limits = {});

@@ -8,10 +8,11 @@
 
 namespace casteljau {
 
+/// A whole text file read into memory, or why it could not be.
 struct TextFile {
     std::string text;
-    std::string error;     // empty on success: "path: what"
-    bool io_error = false; // could not be read (as opposed to: too large)
+    std::string error;     ///< empty on success: "path: what"
+    bool io_error = false; ///< could not be read (as opposed to: too large)
 };
 
 TextFile read_text_file(const std::string& path, std::size_t max_bytes);

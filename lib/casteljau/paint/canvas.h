@@ -19,7 +19,7 @@
 
 namespace casteljau {
 
-// Source-over of premultiplied `s` scaled by coverage k onto d.
+/// Source-over of premultiplied `s` scaled by coverage k onto d.
 inline void blend_over(Premul& d, Premul s, float k) {
     const float inv = 1.0f - k * s.a;
     d.r = k * s.r + inv * d.r;
@@ -28,26 +28,34 @@ inline void blend_over(Premul& d, Premul s, float k) {
     d.a = k * s.a + inv * d.a;
 }
 
+/// A premultiplied float RGBA image, or an offscreen layer placed in its parent.
 class Canvas {
   public:
     Canvas() = default;
-    // Transparent, with its top-left corner at (ox, oy) of the parent canvas.
+    /// Transparent, with its top-left corner at (ox, oy) of the parent canvas.
     Canvas(int width, int height, int ox = 0, int oy = 0);
-    // Resizes (keeping storage when large enough) and clears to `clear`.
+    /// Resizes (keeping storage when large enough) and clears to `clear`.
     void reset(int width, int height, int ox = 0, int oy = 0, Premul clear = {});
 
+    /// Width in pixels.
     int width() const { return w_; }
+    /// Height in pixels.
     int height() const { return h_; }
+    /// Column of the parent (or frame) where this canvas starts.
     int origin_x() const { return ox_; }
+    /// Row of the parent (or frame) where this canvas starts.
     int origin_y() const { return oy_; }
+    /// The pixels of row y (0 <= y < height()).
     Premul* row(int y) { return px_.data() + std::size_t(y) * std::size_t(w_); }
+    /// The pixels of row y (0 <= y < height()), read-only.
     const Premul* row(int y) const { return px_.data() + std::size_t(y) * std::size_t(w_); }
 
+    /// Sets every pixel to `color`.
     void fill(Premul color);
-    // Source-over of `color` through the span's coverage (span in this canvas's pixels).
+    /// Source-over of `color` through the span's coverage (span in this canvas's pixels).
     void composite_span(const Span& s, Premul color);
-    // Source-over of a layer (placed at its origin, relative to this canvas's
-    // origin), scaled by `opacity`; the parts outside this canvas are dropped.
+    /// Source-over of a layer (placed at its origin, relative to this canvas's
+    /// origin), scaled by `opacity`; the parts outside this canvas are dropped.
     void composite_layer(const Canvas& layer, float opacity);
 
   private:
@@ -55,11 +63,13 @@ class Canvas {
     int w_ = 0, h_ = 0, ox_ = 0, oy_ = 0;
 };
 
-// Adapts the raster's span interface (absolute pixel coordinates) to
-// solid-color compositing on a canvas placed at its origin.
+/// Adapts the raster's span interface (absolute pixel coordinates) to
+/// solid-color compositing on a canvas placed at its origin.
 class SolidSpanPainter final : public SpanSink {
   public:
+    /// Paints `color` onto `c`.
     SolidSpanPainter(Canvas& c, Premul color) : canvas_(c), color_(color) {}
+    /// Source-over of the color through the span's coverage.
     void span(const Span& s) override {
         canvas_.composite_span(
             {s.y - canvas_.origin_y(), s.x - canvas_.origin_x(), s.len, s.coverage}, color_);
@@ -70,11 +80,13 @@ class SolidSpanPainter final : public SpanSink {
     Premul color_;
 };
 
-// Adapts the span interface to gradient compositing: each pixel's color comes
-// from the shader at the pixel's centre.
+/// Adapts the span interface to gradient compositing: each pixel's color comes
+/// from the shader at the pixel's centre.
 class GradientSpanPainter final : public SpanSink {
   public:
+    /// Paints the gradient `shader` onto `c`.
     GradientSpanPainter(Canvas& c, const GradientShader& shader) : canvas_(c), shader_(shader) {}
+    /// Source-over of the shaded pixels through the span's coverage.
     void span(const Span& s) override {
         Premul* d = canvas_.row(s.y - canvas_.origin_y()) + (s.x - canvas_.origin_x());
         for (int i = 0; i < s.len; ++i) blend_over(d[i], shader_.at(s.x + i, s.y), s.coverage[i]);

@@ -6,11 +6,14 @@
 
 namespace casteljau {
 
+/// A straight (not premultiplied) sRGB color with alpha, components in [0, 1].
 struct Rgba {
     float r = 0, g = 0, b = 0, a = 1;
+    /// Exact equality of every member.
     constexpr bool operator==(const Rgba&) const = default;
 };
 
+/// A premultiplied color: what the compositor works in.
 struct Premul {
     float r = 0, g = 0, b = 0, a = 0;
 };

@@ -31,47 +31,51 @@ namespace casteljau {
 
 enum class Spread { Pad, Reflect, Repeat };
 
+/// A color at an offset along a gradient.
 struct GradientStop {
-    float offset = 0; // in [0, 1], nondecreasing along the list
-    Rgba color;       // alpha includes stop-opacity
+    float offset = 0; ///< in [0, 1], nondecreasing along the list
+    Rgba color;       ///< alpha includes stop-opacity
+    /// Exact equality of every member.
     constexpr bool operator==(const GradientStop&) const = default;
 };
 
+/// A linear or radial gradient as SVG defines it (13.2).
 struct Gradient {
+    /// Linear (p1 to p2) or radial (centre, radius, focal point).
     enum class Kind { Linear, Radial } kind = Kind::Linear;
-    Point p1{0, 0}, p2{1, 0};                // linear
-    Point center{0.5, 0.5}, focal{0.5, 0.5}; // radial
-    double radius = 0.5;                     // radial
-    Affine transform;                        // gradientTransform
-    bool object_bounding_box = true;         // gradientUnits
+    Point p1{0, 0}, p2{1, 0};                ///< linear
+    Point center{0.5, 0.5}, focal{0.5, 0.5}; ///< radial
+    double radius = 0.5;                     ///< radial
+    Affine transform;                        ///< gradientTransform
+    bool object_bounding_box = true;         ///< gradientUnits
     Spread spread = Spread::Pad;
-    bool linear_light = false; // interpolate in linear light instead of sRGB
+    bool linear_light = false; ///< interpolate in linear light instead of sRGB
     std::vector<GradientStop> stops;
 };
 
 inline constexpr int kGradientLut = 1024;
 
-// A gradient ready to shade device pixels: the device -> gradient-space map,
-// the geometry, and the color table.
+/// A gradient ready to shade device pixels: the device -> gradient-space map,
+/// the geometry, and the color table.
 class GradientShader {
   public:
-    // `to_device` maps gradient space to device pixels (user transform,
-    // bounding box and gradientTransform composed). False when that map is
-    // singular or the gradient has no stops: then nothing is painted.
-    // `linear_light` asks for linear-light interpolation whatever the gradient says.
+    /// `to_device` maps gradient space to device pixels (user transform,
+    /// bounding box and gradientTransform composed). False when that map is
+    /// singular or the gradient has no stops: then nothing is painted.
+    /// `linear_light` asks for linear-light interpolation whatever the gradient says.
     bool prepare(const Gradient& g, const Affine& to_device, float opacity,
                  bool linear_light = false);
-    // The premultiplied color at the centre of device pixel (x, y).
+    /// The premultiplied color at the centre of device pixel (x, y).
     Premul at(int x, int y) const;
-    // The gradient parameter after spread, in [0, 1], at device point p.
+    /// The gradient parameter after spread, in [0, 1], at device point p.
     double parameter(Point p) const;
 
   private:
     void build_table(const Gradient& g, float opacity, bool linear_light);
 
     const Gradient* g_ = nullptr;
-    // What the table was built from: compared by value, so a table is never
-    // reused for a different gradient, whatever the gradients' lifetimes.
+    /// What the table was built from: compared by value, so a table is never
+    /// reused for a different gradient, whatever the gradients' lifetimes.
     std::vector<GradientStop> lut_stops_;
     float lut_opacity_ = -1;
     bool lut_linear_ = false;

@@ -42,7 +42,7 @@ inline constexpr BasisMatrix<3> kBSplineMatrix = {{{-1 / 6.0, 3 / 6.0, -3 / 6.0,
                                                    {-3 / 6.0, 0, 3 / 6.0, 0},
                                                    {1 / 6.0, 4 / 6.0, 1 / 6.0, 0}}};
 
-// The basis values T(t) M, by Horner's rule down the rows of M.
+/// The basis values T(t) M, by Horner's rule down the rows of M.
 template <std::size_t K>
 constexpr std::array<double, K> basis_weights(const std::array<std::array<double, K>, K>& m,
                                               double t) {

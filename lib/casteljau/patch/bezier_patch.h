@@ -24,44 +24,50 @@
 
 namespace casteljau {
 
-// A patch point with its position derivatives.
+/// A patch point with its position derivatives.
 struct PatchDerivatives {
     PatchPoint point;
     Vec3 du, dv, duv;
 };
 
-// M is the degree in u (columns), N the degree in v (rows).
+/// M is the degree in u (columns), N the degree in v (rows).
 template <int M, int N>
 struct BezierPatch {
     static constexpr int kDegreeU = M, kDegreeV = N;
+    /// One row of control points (along u).
     using Row = std::array<PatchPoint, M + 1>;
     PatchGrid<M + 1, N + 1> c{};
 
+    /// Control point of row r, column k.
     constexpr const PatchPoint& at(int r, int k) const { return c[r][k]; }
-    // Corners in the order (u, v) = (0,0), (1,0), (0,1), (1,1).
+    /// Corners in the order (u, v) = (0,0), (1,0), (0,1), (1,1).
     constexpr std::array<PatchPoint, 4> corners() const {
         return {c[0][0], c[0][M], c[N][0], c[N][M]};
     }
-    // The boundary or interior curve along u at row r, and along v at column k.
+    /// The boundary or interior curve along u at row r, and along v at column k.
     constexpr Row row(int r) const { return c[r]; }
+    /// Column k of control points (along v).
     constexpr std::array<PatchPoint, N + 1> column(int k) const {
         std::array<PatchPoint, N + 1> col{};
         for (int r = 0; r <= N; ++r) col[r] = c[r][k];
         return col;
     }
 
+    /// The surface at (u, v), by de Casteljau.
     constexpr PatchPoint eval(double u, double v) const {
         Row q{};
         for (int k = 0; k <= M; ++k) q[k] = along(column(k), v);
         return along(q, u);
     }
 
+    /// The surface at (u, v) by the matrix form U M P M^T V^T (the reference).
     constexpr PatchPoint eval_matrix(double u, double v) const {
         constexpr BasisMatrix<M> mu = bezier_matrix<M>();
         constexpr BasisMatrix<N> mv = bezier_matrix<N>();
         return tensor_sum(basis_weights(mv, v), basis_weights(mu, u), c);
     }
 
+    /// Position and first derivatives at (u, v).
     constexpr PatchDerivatives derivatives(double u, double v) const {
         Row q{};
         std::array<Vec3, M + 1> qv{};
@@ -75,6 +81,7 @@ struct BezierPatch {
         return {lerp(a, b, u), M * (b.p - a.p), lerp(va, vb, u), M * (vb - va)};
     }
 
+    /// The halves [0, t] and [t, 1] in u.
     constexpr std::array<BezierPatch, 2> split_u(double t) const {
         std::array<BezierPatch, 2> out{};
         for (int r = 0; r <= N; ++r)
@@ -84,6 +91,7 @@ struct BezierPatch {
         return out;
     }
 
+    /// The halves [0, t] and [t, 1] in v.
     constexpr std::array<BezierPatch, 2> split_v(double t) const {
         std::array<BezierPatch, 2> out{};
         for (int k = 0; k <= M; ++k) {
@@ -99,7 +107,7 @@ struct BezierPatch {
         return out;
     }
 
-    // The piece over [u0, u1] x [v0, v1].
+    /// The piece over [u0, u1] x [v0, v1].
     constexpr BezierPatch subpatch(double u0, double u1, double v0, double v1) const {
         BezierPatch out = *this;
         for (int r = 0; r <= N; ++r)
@@ -115,6 +123,7 @@ struct BezierPatch {
         return out;
     }
 
+    /// Box of the control points, which holds the curve (convex hull property).
     constexpr Box3 control_bounds() const { return grid_bounds(c); }
 
   private:
@@ -122,8 +131,8 @@ struct BezierPatch {
     static constexpr T along(const std::array<T, K>& p, double t) {
         return decasteljau_eval(std::span<const T, K>(p), t);
     }
-    // The two points of the last-but-one de Casteljau level: their lerp is the
-    // point, their difference times the degree the derivative.
+    /// The two points of the last-but-one de Casteljau level: their lerp is the
+    /// point, their difference times the degree the derivative.
     template <class T, std::size_t K>
     static constexpr std::array<T, 2> last_two(std::array<T, K> q, double t) {
         if constexpr (K == 1) {
@@ -140,9 +149,9 @@ using BilinearPatch = BezierPatch<1, 1>;
 using QuadPatch = BezierPatch<2, 2>;
 using CubicPatch = BezierPatch<3, 3>;
 
-// Degree elevation in u or v (Farin 5th ed., 5.1 per row): the same surface
-// with one more control point per row (column). Readers use it to bring a
-// mixed-degree patch (say 1 x 3) to one of the three square kinds.
+/// Degree elevation in u or v (Farin 5th ed., 5.1 per row): the same surface
+/// with one more control point per row (column). Readers use it to bring a
+/// mixed-degree patch (say 1 x 3) to one of the three square kinds.
 template <int M, int N>
 constexpr BezierPatch<M + 1, N> elevate_u(const BezierPatch<M, N>& p) {
     BezierPatch<M + 1, N> out{};

@@ -17,13 +17,16 @@
 
 namespace casteljau {
 
+/// A uniform bicubic B-spline patch: 4 x 4 control points.
 struct BSplinePatch {
     PatchGrid<4, 4> c{};
 
+    /// The surface at (u, v) by the B-spline matrix form.
     constexpr PatchPoint eval_matrix(double u, double v) const {
         return tensor_sum(basis_weights(kBSplineMatrix, v), basis_weights(kBSplineMatrix, u), c);
     }
 
+    /// The same surface as a bicubic Bezier patch.
     constexpr CubicPatch to_bezier() const {
         constexpr double w[4][4] = {{1 / 6.0, 4 / 6.0, 1 / 6.0, 0},
                                     {0, 4 / 6.0, 2 / 6.0, 0},
@@ -46,10 +49,13 @@ struct BSplinePatch {
         return out;
     }
 
+    /// The surface at (u, v), through its Bezier form.
     constexpr PatchPoint eval(double u, double v) const { return to_bezier().eval(u, v); }
+    /// Position and first derivatives at (u, v).
     constexpr PatchDerivatives derivatives(double u, double v) const {
         return to_bezier().derivatives(u, v);
     }
+    /// Box of the control points, which holds the curve (convex hull property).
     constexpr Box3 control_bounds() const { return grid_bounds(c); }
 };
 

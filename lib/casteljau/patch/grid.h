@@ -17,10 +17,10 @@
 
 namespace casteljau {
 
-// Requires rows and cols odd and >= 3, and points.size() == rows * cols.
+/// Requires rows and cols odd and >= 3, and points.size() == rows * cols.
 std::vector<QuadPatch> quad_grid_patches(int rows, int cols, std::span<const PatchPoint> points);
 
-// Requires rows, cols >= 4 and points.size() == rows * cols.
+/// Requires rows, cols >= 4 and points.size() == rows * cols.
 std::vector<BSplinePatch> bspline_grid_patches(int rows, int cols,
                                                std::span<const PatchPoint> points);
 

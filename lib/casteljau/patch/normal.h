@@ -18,8 +18,8 @@ namespace casteljau {
 
 namespace detail {
 
-// |n|^2 against (1e-10 L^2)^2: well above rounding of the cross product of
-// derivatives of size L (about 1e-16 L^2), well below any real tangent plane.
+/// |n|^2 against (1e-10 L^2)^2: well above rounding of the cross product of
+/// derivatives of size L (about 1e-16 L^2), well below any real tangent plane.
 inline bool normal_is_degenerate(Vec3 n, double size) {
     const double floor = 1e-10 * size * size;
     return n.length_sq() <= floor * floor;
@@ -27,8 +27,8 @@ inline bool normal_is_degenerate(Vec3 n, double size) {
 
 } // namespace detail
 
-// With the derivatives at (u, v) and the control net's size already at hand
-// (the tessellators have both).
+/// With the derivatives at (u, v) and the control net's size already at hand
+/// (the tessellators have both).
 template <class Patch>
 Vec3 patch_normal(const Patch& patch, double u, double v, const PatchDerivatives& d, double size) {
     Vec3 n = d.du.cross(d.dv);

@@ -17,14 +17,16 @@ namespace casteljau {
 
 using AnyPatch = std::variant<BilinearPatch, QuadPatch, CubicPatch>;
 
-// The Bezier patch of degree du in u and dv in v (each 1 to 3) on a grid of
-// dv + 1 rows of du + 1 points (row-major, rows along v), degree-elevated to
-// the square kind of the larger degree.
+/// The Bezier patch of degree du in u and dv in v (each 1 to 3) on a grid of
+/// dv + 1 rows of du + 1 points (row-major, rows along v), degree-elevated to
+/// the square kind of the larger degree.
 AnyPatch bezier_from_grid(int du, int dv, std::span<const PatchPoint> points);
 
+/// A model: its patches, in any mix of kinds.
 struct PatchModel {
     std::vector<AnyPatch> patches;
 
+    /// Box of the control points, which holds the curve (convex hull property).
     Box3 control_bounds() const {
         Box3 b;
         for (const AnyPatch& p : patches) {

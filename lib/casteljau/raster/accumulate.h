@@ -25,26 +25,30 @@
 
 namespace casteljau {
 
+/// One scanline of area/cover differences: the accumulation stage.
 class CoverageRow {
   public:
-    // A zeroed row for `width` pixels; the storage is kept across calls.
+    /// A zeroed row for `width` pixels; the storage is kept across calls.
     void reset(int width);
 
-    // Adds a segment lying inside the row: 0 <= ya < yb <= 1 in row-local y,
-    // 0 <= x <= width. `dir` is the edge's winding direction.
+    /// Adds a segment lying inside the row: 0 <= ya < yb <= 1 in row-local y,
+    /// 0 <= x <= width. `dir` is the edge's winding direction.
     void add_segment(float xa, float ya, float xb, float yb, float dir);
 
-    // The touched columns are [begin(), end()); empty when begin() >= end().
+    /// The touched columns are [begin(), end()); empty when begin() >= end().
     int begin() const { return begin_; }
+    /// Where the curve ends (t = 1).
     int end() const { return end_; }
+    /// The accumulated differences (width + 2 entries).
     float* data() { return acc_.data(); }
+    /// Row width in pixels.
     int width() const { return width_; }
-    // Forgets the touched range after a sweep has zeroed it.
+    /// Forgets the touched range after a sweep has zeroed it.
     void clear_range() { begin_ = width_ + 1, end_ = 0; }
 
   private:
     void touch(int i0, int i1);
-    std::vector<float> acc_; // width + 2 entries: an edge at x = width writes acc[width + 1]
+    std::vector<float> acc_; ///< width + 2 entries: an edge at x = width writes acc[width + 1]
     int width_ = 0, begin_ = 0, end_ = 0;
 };
 

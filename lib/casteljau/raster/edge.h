@@ -26,30 +26,39 @@
 
 namespace casteljau {
 
-// Pixels [x0, x1) x [y0, y1).
+/// Pixels [x0, x1) x [y0, y1).
 struct PixelRect {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    /// Number of columns.
     int width() const { return x1 - x0; }
+    /// Number of rows.
     int height() const { return y1 - y0; }
 };
 
+/// A clipped, directed line segment in device pixels, top to bottom.
 struct Edge {
-    float x0, y0, x1, y1; // y0 < y1
-    float dir;            // +1 or -1
+    float x0, y0, x1, y1; ///< y0 < y1
+    float dir;            ///< +1 or -1
 };
 
+/// Edge building: device-space segments clipped into edges, kept across paths.
 class EdgeList {
   public:
-    // Starts a new list clipped to `clip`, for the rows [row_begin, row_end);
-    // keeps the storage.
+    /// Starts a new list clipped to `clip`, for the rows [row_begin, row_end);
+    /// keeps the storage.
     void reset(PixelRect clip, int row_begin, int row_end);
+    /// Starts a new list for a width x height canvas (all rows).
     void reset(int width, int height) { reset({0, 0, width, height}, 0, height); }
-    // Adds the segment a -> b, clipped. Precondition: finite coordinates.
+    /// Adds the segment a -> b, clipped. Precondition: finite coordinates.
     void add_line(Point a, Point b);
 
+    /// The edges added so far.
     const std::vector<Edge>& edges() const { return edges_; }
+    /// The clip rectangle.
     const PixelRect& clip() const { return clip_; }
+    /// First row the edges are built for.
     int row_begin() const { return row_begin_; }
+    /// One past the last row the edges are built for.
     int row_end() const { return row_end_; }
 
   private:

@@ -31,9 +31,9 @@
 
 namespace casteljau {
 
-// Adds the filled outline of `path` under `to_device` to `edges` (whose canvas
-// size is set). With `measure_error` the exact error measure of every
-// flattened piece is folded into the returned stats (for --stats; slow).
+/// Adds the filled outline of `path` under `to_device` to `edges` (whose canvas
+/// size is set). With `measure_error` the exact error measure of every
+/// flattened piece is folded into the returned stats (for --stats; slow).
 FlattenStats add_path_edges(const Path& path, const Affine& to_device,
                             const FlattenOptions& options, EdgeList& edges,
                             bool measure_error = false);

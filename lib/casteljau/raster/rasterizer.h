@@ -22,16 +22,17 @@
 
 namespace casteljau {
 
+/// The scanline driver: edges to spans, with all buffers kept between calls.
 class Rasterizer {
   public:
-    // Emits the spans of the rows [edges.row_begin(), edges.row_end()), in the
-    // clip rectangle's columns, in absolute pixel coordinates.
+    /// Emits the spans of the rows [edges.row_begin(), edges.row_end()), in the
+    /// clip rectangle's columns, in absolute pixel coordinates.
     void fill(const EdgeList& edges, FillRule rule, bool antialias, SpanSink& sink);
 
   private:
     struct Active {
         float x0, y0, y1, dxdy, dir;
-        std::uint32_t order; // position in the edge list: the tie-breaker of the sort
+        std::uint32_t order; ///< position in the edge list: the tie-breaker of the sort
     };
     struct Crossing {
         float x, dir;

@@ -26,11 +26,11 @@ inline float apply_fill_rule(float s, FillRule rule) {
     return m > 1.0f ? 2.0f - m : m;
 }
 
-// Sweeps row `y`, emits spans of nonzero coverage, and leaves the row zeroed.
-// A running sum still nonzero after the last touched column (an outline that
-// extends past the right border) covers the rest of the row.
-// `scratch` holds the coverage values and is grown as needed.
-// Row column i is pixel x_offset + i.
+/// Sweeps row `y`, emits spans of nonzero coverage, and leaves the row zeroed.
+/// A running sum still nonzero after the last touched column (an outline that
+/// extends past the right border) covers the rest of the row.
+/// `scratch` holds the coverage values and is grown as needed.
+/// Row column i is pixel x_offset + i.
 void sweep_row(CoverageRow& row, int y, int x_offset, FillRule rule, std::vector<float>& scratch,
                SpanSink& sink);
 

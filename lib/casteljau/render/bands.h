@@ -19,14 +19,15 @@
 
 namespace casteljau {
 
-// 128 rows of a 1024 px wide frame are 2 MiB of float RGBA, about a mid-level
-// cache; 64 and 256 measured slower on the dense scene (bench/render).
+/// 128 rows of a 1024 px wide frame are 2 MiB of float RGBA, about a mid-level
+/// cache; 64 and 256 measured slower on the dense scene (bench/render).
 inline constexpr int kBandRows = 128;
 
+/// Renders a frame in horizontal bands, on one thread or several, bit-identically.
 class BandRenderer {
   public:
-    // Clears `canvas` (origin 0, 0) to `background` and renders `scene` into it.
-    // The stats add up the bands' times (CPU time, not wall time) and counts.
+    /// Clears `canvas` (origin 0, 0) to `background` and renders `scene` into it.
+    /// The stats add up the bands' times (CPU time, not wall time) and counts.
     RenderStats render(const Scene& scene, const Affine& view, Canvas& canvas,
                        const RenderOptions& options, Premul background, int threads);
 

@@ -20,65 +20,69 @@
 
 namespace casteljau {
 
+/// How to render: flattening, antialiasing, statistics, gradient interpolation.
 struct RenderOptions {
     FlattenOptions flatten;
     bool antialias = true;
-    bool measure_error = false;          // fold the exact flattening error into the stats (slow)
-    bool linear_light_gradients = false; // interpolate gradients in linear light, not sRGB
+    bool measure_error = false;          ///< fold the exact flattening error into the stats (slow)
+    bool linear_light_gradients = false; ///< interpolate gradients in linear light, not sRGB
 };
 
+/// What a render did and how long it took.
 struct RenderStats {
     FlattenStats flatten;
-    double flatten_ms = 0; // edge building: culling, flattening, clipping
-    double raster_ms = 0;  // accumulation, sweep and compositing
+    double flatten_ms = 0; ///< edge building: culling, flattening, clipping
+    double raster_ms = 0;  ///< accumulation, sweep and compositing
 
-    // Sums counts and times; keeps the largest depth and error.
+    /// Sums counts and times; keeps the largest depth and error.
     RenderStats& operator+=(const RenderStats& o);
 };
 
+/// Draws a Scene onto a Canvas, keeping its buffers between shapes and frames.
 class Renderer {
   public:
-    // Draws `scene` onto `canvas`, mapping scene device space by `view`
-    // (e.g. a scale to the output size). `frame` is the whole image in pixels
-    // when `canvas` is one band of it (its origin tells where); edges are
-    // clipped to the frame's rows so that bands match the whole bit for bit.
+    /// Draws `scene` onto `canvas`, mapping scene device space by `view`
+    /// (e.g. a scale to the output size). `frame` is the whole image in pixels
+    /// when `canvas` is one band of it (its origin tells where); edges are
+    /// clipped to the frame's rows so that bands match the whole bit for bit.
     RenderStats render(const Scene& scene, const Affine& view, Canvas& canvas,
                        const RenderOptions& options);
+    /// Draws `scene` onto all of `canvas` (the canvas is the frame).
     RenderStats render(const Scene& scene, const Affine& view, Canvas& canvas,
                        const RenderOptions& options, const PixelRect& frame);
-    // Draws only the given nodes, in order, as render() would draw them as the
-    // root's children: for a caller that culls with its own index (see
-    // Drawing). `canvas` may be any tile of `frame`, and gets exactly the
-    // pixels a render of the whole frame gives there.
+    /// Draws only the given nodes, in order, as render() would draw them as the
+    /// root's children: for a caller that culls with its own index (see
+    /// Drawing). `canvas` may be any tile of `frame`, and gets exactly the
+    /// pixels a render of the whole frame gives there.
     RenderStats render_nodes(std::span<const Node* const> nodes, const Affine& view, Canvas& canvas,
                              const RenderOptions& options, const PixelRect& frame);
 
-    // The device box (under `view`) outside which a shape changes no pixel:
-    // its control box mapped, grown by the stroke's reach.
+    /// The device box (under `view`) outside which a shape changes no pixel:
+    /// its control box mapped, grown by the stroke's reach.
     static Rect reach_box(const Shape& s, const Affine& view);
 
-    // How far (device px) a shape's stroke can reach beyond its path.
+    /// How far (device px) a shape's stroke can reach beyond its path.
     static double stroke_reach(const Shape& s, const Affine& to_device);
 
   private:
     void draw_group(const Group& g, Canvas& target, int depth);
     void draw_node(const Node& n, Canvas& target, int depth);
     void draw_shape(const Shape& s, Canvas& target, float opacity);
-    // Draws into an offscreen layer over the node's bounds, composited with `opacity`.
+    /// Draws into an offscreen layer over the node's bounds, composited with `opacity`.
     template <class Draw>
     void in_layer(const Node& n, Canvas& target, int depth, float opacity, Draw draw);
     void draw_stroke(const Shape& s, const Affine& m, const PixelRect& clip, Canvas& target,
                      float opacity);
-    // Composites the current edge list with a solid color or a gradient.
+    /// Composites the current edge list with a solid color or a gradient.
     void paint(const Shape& s, Rgba color, const Gradient* gradient, float opacity, FillRule rule,
                Canvas& target);
     Canvas& layer(int depth);
 
     EdgeList edges_;
     Rasterizer raster_;
-    GradientShader gradient_shader_;              // its color table is reused across shapes
-    std::vector<Polygon> polygons_;               // stroke outlines, reused across shapes
-    std::vector<std::unique_ptr<Canvas>> layers_; // one per group nesting depth
+    GradientShader gradient_shader_;              ///< its color table is reused across shapes
+    std::vector<Polygon> polygons_;               ///< stroke outlines, reused across shapes
+    std::vector<std::unique_ptr<Canvas>> layers_; ///< one per group nesting depth
     Affine view_;
     PixelRect frame_;
     const RenderOptions* options_ = nullptr;

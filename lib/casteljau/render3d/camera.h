@@ -12,14 +12,15 @@
 
 namespace casteljau {
 
+/// A camera looking from `eye` at `target`, with `up` upwards and a vertical field of view.
 struct LookAt {
     Point3 eye{0, -10, 0}, target{};
     Vec3 up{0, 0, 1};
-    double fov_deg = 35; // vertical field of view
+    double fov_deg = 35; ///< vertical field of view
 };
 
-// The projection of a look-at camera onto a width x height image. Requires eye
-// != target, up not parallel to the line of sight, 0 < fov_deg < 180.
+/// The projection of a look-at camera onto a width x height image. Requires eye
+/// != target, up not parallel to the line of sight, 0 < fov_deg < 180.
 ScreenProjection make_projection(const LookAt& camera, int width, int height);
 
 LookAt orbit_view(const Box3& bounds, double azimuth_deg, double elevation_deg, int width,

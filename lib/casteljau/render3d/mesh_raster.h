@@ -30,30 +30,34 @@
 
 namespace casteljau {
 
+/// How a mesh is shaded: texture or albedo, lights, wireframe.
 struct MeshStyle {
-    const Texture* texture = nullptr; // nullptr: the plain albedo below
+    const Texture* texture = nullptr; ///< nullptr: the plain albedo below
     Rgb albedo{0.75f, 0.75f, 0.75f};
     bool wireframe = false;
 };
 
+/// The 3D rasterizer: meshes to pixels with a multisampled z-buffer.
 class MeshRenderer {
   public:
-    // Composites the mesh (source-over) onto `canvas`, which must be the
-    // projection's width x height.
+    /// Composites the mesh (source-over) onto `canvas`, which must be the
+    /// projection's width x height.
     void render(const Mesh& mesh, const ScreenProjection& view, const MeshStyle& style,
                 Canvas& canvas);
 
+    /// A vertex after projection.
     struct ScreenVertex {
-        Vec3 c; // camera space
-        Vec3 n; // camera-space normal
+        Vec3 c; ///< camera space
+        Vec3 n; ///< camera-space normal
         Point st;
-        Point px; // pixel position
-        double w; // 1 / depth
+        Point px; ///< pixel position
+        double w; ///< 1 / depth
     };
+    /// A projected triangle ready to scan.
     struct ScreenTriangle {
         ScreenVertex v[3];
-        double y0, y1;  // rows covered
-        Vec2 footprint; // (s, t) extent of one pixel
+        double y0, y1;  ///< rows covered
+        Vec2 footprint; ///< (s, t) extent of one pixel
     };
 
   private:
@@ -61,14 +65,14 @@ class MeshRenderer {
     void add_triangle(const ScreenVertex (&v)[3], const ScreenProjection& view);
     void draw_band(int y0, int y1, int width, const MeshStyle& style, Canvas& canvas);
     void draw_triangle(const ScreenTriangle& t, int y0, int y1, int width, const MeshStyle& style);
-    // The colour at screen barycentrics `lambda`, `edge_px` from the nearest edge.
+    /// The colour at screen barycentrics `lambda`, `edge_px` from the nearest edge.
     Rgb shade(const ScreenTriangle& t, const double (&lambda)[3], double edge_px,
               const MeshStyle& style) const;
 
     std::vector<ScreenVertex> verts_;
     std::vector<ScreenTriangle> tris_;
-    std::vector<float> depth_; // per sample: 1/z, 0 where empty
-    std::vector<Rgb> color_;   // per sample, linear
+    std::vector<float> depth_; ///< per sample: 1/z, 0 where empty
+    std::vector<Rgb> color_;   ///< per sample, linear
 };
 
 } // namespace casteljau

@@ -18,17 +18,19 @@
 
 namespace casteljau {
 
+/// A linear RGB color.
 struct Rgb {
     float r = 0, g = 0, b = 0;
 };
 
+/// A surface texture: the analytic checker or an image, sampled at (s, t).
 class Texture {
   public:
-    // The checker.
+    /// The checker.
     Texture() = default;
-    // Reads an image; returns an empty string on success, otherwise the error.
+    /// Reads an image; returns an empty string on success, otherwise the error.
     std::string load(const std::string& path);
-    // `footprint`: the extent in (s, t) of one pixel, for filtering.
+    /// `footprint`: the extent in (s, t) of one pixel, for filtering.
     Rgb at(Point st, Vec2 footprint) const;
 
   private:

@@ -20,18 +20,19 @@
 
 namespace casteljau {
 
+/// How a shape is filled: paint, opacity and fill rule.
 struct Fill {
-    Rgba color;                               // used when there is no gradient
-    std::shared_ptr<const Gradient> gradient; // shared by every shape that uses it
-    float opacity = 1;                        // fill-opacity
+    Rgba color;                               ///< used when there is no gradient
+    std::shared_ptr<const Gradient> gradient; ///< shared by every shape that uses it
+    float opacity = 1;                        ///< fill-opacity
     FillRule rule = FillRule::NonZero;
 };
 
 enum class LineJoin { Miter, Round, Bevel };
 enum class LineCap { Butt, Round, Square };
 
-// The shape of a stroke, its paint apart: all that the stroker needs, and
-// what the SVG style cascade computes (initial values of SVG 1.1, 11.4).
+/// The shape of a stroke, its paint apart: all that the stroker needs, and
+/// what the SVG style cascade computes (initial values of SVG 1.1, 11.4).
 struct StrokeGeometry {
     double width = 1;
     LineJoin join = LineJoin::Miter;
@@ -41,35 +42,40 @@ struct StrokeGeometry {
     double dash_offset = 0;
 };
 
+/// How a shape is stroked: paint, opacity and geometry.
 struct Stroke {
-    Rgba color;                               // used when there is no gradient
-    std::shared_ptr<const Gradient> gradient; // shared by every shape that uses it
+    Rgba color;                               ///< used when there is no gradient
+    std::shared_ptr<const Gradient> gradient; ///< shared by every shape that uses it
     float opacity = 1;
     StrokeGeometry geometry;
 };
 
+/// A path with its transform, fill, stroke and opacity.
 struct Shape {
     Path path;
-    Affine transform; // user space -> scene device space
+    Affine transform; ///< user space -> scene device space
     std::optional<Fill> fill;
     std::optional<Stroke> stroke;
-    float opacity = 1; // the element's own opacity
+    float opacity = 1; ///< the element's own opacity
     int source_line = 0;
 };
 
 struct Node;
 
+/// Children drawn together, composited with the group's opacity.
 struct Group {
     float opacity = 1;
     std::vector<Node> children;
 };
 
+/// A shape or a group.
 struct Node {
     std::variant<Shape, Group> item;
 };
 
+/// What gets drawn: a size and a tree of groups and shapes.
 struct Scene {
-    double width = 0, height = 0; // device size at scale 1, in px
+    double width = 0, height = 0; ///< device size at scale 1, in px
     Group root;
 };
 

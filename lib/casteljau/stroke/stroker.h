@@ -46,8 +46,8 @@ namespace casteljau {
 
 using Polygon = std::vector<Point>;
 
-// Appends the outline polygons of the stroke (in the path's own coordinates)
-// to `out`. `tolerance` (> 0) and `visible` are in the same coordinates.
+/// Appends the outline polygons of the stroke (in the path's own coordinates)
+/// to `out`. `tolerance` (> 0) and `visible` are in the same coordinates.
 void stroke_outline(const Path& path, const StrokeGeometry& style, double tolerance,
                     std::vector<Polygon>& out, const Rect& visible = Rect::everything());
 

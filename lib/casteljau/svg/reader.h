@@ -25,21 +25,23 @@
 
 namespace casteljau {
 
+/// Limits and options of the SVG reader.
 struct SvgOptions {
-    std::size_t max_file_bytes = std::size_t(256) << 20; // 256 MiB
+    std::size_t max_file_bytes = std::size_t(256) << 20; ///< 256 MiB
     std::size_t max_elements = 1'000'000;
-    int max_depth = 256; // element nesting
-    // Any one attribute: 32 MiB holds a million path segments ("L1234.5
-    // 678.9" is 14 bytes, an absolute cubic about 40).
+    int max_depth = 256; ///< element nesting
+    /// Any one attribute: 32 MiB holds a million path segments ("L1234.5
+    /// 678.9" is 14 bytes, an absolute cubic about 40).
     std::size_t max_attribute_bytes = std::size_t(32) << 20;
-    double max_size = 16384;        // document width and height, px
-    bool partial_path_data = false; // draw bad path data up to the error (F.2), warning
+    double max_size = 16384;        ///< document width and height, px
+    bool partial_path_data = false; ///< draw bad path data up to the error (F.2), warning
 };
 
+/// A read SVG document: the scene, or a located error.
 struct SvgResult {
-    std::optional<Scene> scene; // empty on error
-    std::string error;          // "file:line: <element>: what"
-    bool io_error = false;      // the file could not be read (not its content)
+    std::optional<Scene> scene; ///< empty on error
+    std::string error;          ///< "file:line: <element>: what"
+    bool io_error = false;      ///< the file could not be read (not its content)
     std::vector<std::string> warnings;
 };
 

@@ -13,15 +13,15 @@
 
 namespace casteljau {
 
-// rx, ry: negative means "not given" (auto); both are then resolved per 9.2.
+/// rx, ry: negative means "not given" (auto); both are then resolved per 9.2.
 Path rect_path(double x, double y, double w, double h, double rx, double ry);
 Path ellipse_path(double cx, double cy, double rx, double ry);
 Path line_path(Point a, Point b);
 Path poly_path(const std::vector<Point>& points, bool close);
 
-// The `points` attribute: coordinate pairs separated by whitespace and/or
-// commas. On malformed input or an odd count, `points` holds the pairs before
-// the error (SVG 1.1 F.2: render up to it) and `error` says what is wrong.
+/// The `points` attribute: coordinate pairs separated by whitespace and/or
+/// commas. On malformed input or an odd count, `points` holds the pairs before
+/// the error (SVG 1.1 F.2: render up to it) and `error` says what is wrong.
 struct PointList {
     std::vector<Point> points;
     std::string error;

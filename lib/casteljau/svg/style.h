@@ -20,13 +20,16 @@
 
 namespace casteljau {
 
+/// A fill or stroke paint as specified: none, a color, currentColor or a url.
 struct PaintSpec {
+    /// No paint, a color, or currentColor.
     enum class Kind { None, Color, CurrentColor } kind = Kind::None;
     Rgba color;
-    bool from_url = false; // url(#id), with `color`/`kind` as its fallback
-    std::string url;       // the id after '#', when from_url
+    bool from_url = false; ///< url(\#id), with `color`/`kind` as its fallback
+    std::string url;       ///< the id after '#', when from_url
 };
 
+/// The computed style properties the cascade carries from parent to child.
 struct StyleState {
     PaintSpec fill{PaintSpec::Kind::Color, {0, 0, 0, 1}, false, {}};
     float fill_opacity = 1;
@@ -38,26 +41,26 @@ struct StyleState {
     bool visible = true;
 };
 
-// Not inherited: reset for every element.
+/// Not inherited: reset for every element.
 struct ElementProps {
     float opacity = 1;
     bool display_none = false;
 };
 
-// Applies one property. Returns "" when applied or unknown, otherwise what is
-// wrong with the value.
+/// Applies one property. Returns "" when applied or unknown, otherwise what is
+/// wrong with the value.
 std::string apply_property(std::string_view name, std::string_view value, const StyleState& parent,
                            StyleState& style, ElementProps& props);
 
-// Splits a `style` attribute into declarations and applies each.
+/// Splits a `style` attribute into declarations and applies each.
 std::string apply_style_attribute(std::string_view css, const StyleState& parent, StyleState& style,
                                   ElementProps& props);
 
-// A length: a number with an optional unit (px, pt, pc, mm, cm, in, em, ex,
-// or % of `percent_of`); nullopt when malformed or not finite.
+/// A length: a number with an optional unit (px, pt, pc, mm, cm, in, em, ex,
+/// or % of `percent_of`); nullopt when malformed or not finite.
 std::optional<double> parse_length(std::string_view text, double percent_of = 0);
 
-// Resolves a paint to a color; nullopt for none.
+/// Resolves a paint to a color; nullopt for none.
 std::optional<Rgba> resolve_paint(const PaintSpec& p, const StyleState& s);
 
 } // namespace casteljau

@@ -12,10 +12,10 @@
 
 namespace casteljau {
 
-// The transform, or an error message naming the offending function.
+/// The transform, or an error message naming the offending function.
 struct TransformResult {
     Affine transform;
-    std::string error; // empty on success
+    std::string error; ///< empty on success
 };
 
 TransformResult parse_transform_list(std::string_view text);

@@ -35,23 +35,24 @@ namespace casteljau {
 
 inline constexpr int kMaxPatchDepth = 16;
 
-// The piece budget: at most 16 pieces per pixel of the image, and at most
-// 2^20 (about 750 MB with the mesh, measured). Within it, pieces are as the bound asks;
-// once it is spent, every piece still to be looked at is emitted as it is,
-// like a piece at the depth cap, so the mesh stays watertight but no longer
-// meets the tolerance everywhere. The depth cap alone bounds a patch by
-// 2^32 pieces: geometry through the eye or near plane, which projects to
-// unbounded size, would otherwise take unbounded time and memory.
+/// The piece budget: at most 16 pieces per pixel of the image, and at most
+/// 2^20 (about 750 MB with the mesh, measured). Within it, pieces are as the bound asks;
+/// once it is spent, every piece still to be looked at is emitted as it is,
+/// like a piece at the depth cap, so the mesh stays watertight but no longer
+/// meets the tolerance everywhere. The depth cap alone bounds a patch by
+/// 2^32 pieces: geometry through the eye or near plane, which projects to
+/// unbounded size, would otherwise take unbounded time and memory.
 inline constexpr std::size_t kMaxPiecesPerPixel = 16;
 inline constexpr std::size_t kMaxPieces = std::size_t(1) << 20;
 std::size_t default_piece_budget(const ScreenProjection& view);
 
+/// What an adaptive tessellation did.
 struct AdaptiveStats {
     std::size_t pieces = 0;
-    bool budget_reached = false; // some pieces may be off by more than the tolerance
+    bool budget_reached = false; ///< some pieces may be off by more than the tolerance
 };
 
-// `out` is cleared first.
+/// `out` is cleared first.
 AdaptiveStats tessellate_adaptive(const PatchModel& model, const ScreenProjection& view,
                                   double tolerance, Mesh& out);
 AdaptiveStats tessellate_adaptive(const PatchModel& model, const ScreenProjection& view,

@@ -27,26 +27,31 @@
 
 namespace casteljau {
 
+/// A shared patch edge and the direction it is used in.
 struct EdgeRef {
     std::uint32_t id = 0;
     bool reversed = false;
 };
 
+/// Builds a watertight Mesh: shared vertices and edges, welded across patches.
 class MeshAssembler {
   public:
+    /// Appends to `mesh`.
     explicit MeshAssembler(Mesh& mesh) : mesh_(mesh) {}
 
-    // The canonical identity of a boundary curve (2 to 4 control points, given
-    // in the patch's own orientation).
+    /// The canonical identity of a boundary curve (2 to 4 control points, given
+    /// in the patch's own orientation).
     EdgeRef edge(std::span<const PatchPoint> curve);
-    // The point at k / n along the edge, in the patch's orientation.
+    /// The point at k / n along the edge, in the patch's orientation.
     Point3 edge_point(EdgeRef e, std::uint32_t k, std::uint32_t n) const;
-    // Canonical parameter of the patch-oriented k / n, and back.
+    /// Canonical parameter of the patch-oriented k / n, and back.
     static std::uint32_t canonical(EdgeRef e, std::uint32_t k, std::uint32_t n) {
         return e.reversed ? n - k : k;
     }
 
+    /// The index of the vertex at p (added when new), with its normal and texture coordinates.
     std::uint32_t vertex(Point3 p, Vec3 normal, Point st);
+    /// Appends a triangle of vertex indices, with where it came from.
     void triangle(std::array<std::uint32_t, 3> v, const TriangleSource& source);
 
   private:

@@ -17,11 +17,13 @@
 
 namespace casteljau {
 
+/// Which patch a triangle came from, and its corners' (u, v) there.
 struct TriangleSource {
     std::uint32_t patch = 0;
     std::array<Point, 3> uv{};
 };
 
+/// An indexed triangle mesh with normals and texture coordinates.
 struct Mesh {
     std::vector<Point3> positions;
     std::vector<Vec3> normals;
@@ -29,6 +31,7 @@ struct Mesh {
     std::vector<std::array<std::uint32_t, 3>> triangles;
     std::vector<TriangleSource> sources;
 
+    /// Empties the mesh, keeping its storage.
     void clear() {
         positions.clear();
         normals.clear();

@@ -37,11 +37,12 @@
 
 namespace casteljau {
 
+/// The screen-space flatness bound of a patch and its parts.
 struct ScreenFlatness {
-    double bound = 0;                // px, as above
-    double u_bend = 0;               // px: how far the rows bend away from their chords
-    double v_bend = 0;               // px: the same for the columns
-    double u_width = 0, v_width = 0; // px: extent along u and along v
+    double bound = 0;                ///< px, as above
+    double u_bend = 0;               ///< px: how far the rows bend away from their chords
+    double v_bend = 0;               ///< px: the same for the columns
+    double u_width = 0, v_width = 0; ///< px: extent along u and along v
     bool visible = true;
 };
 

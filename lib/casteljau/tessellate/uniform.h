@@ -13,14 +13,14 @@
 
 namespace casteljau {
 
-// Requires 1 <= steps_u, steps_v <= 65536. `out` is cleared first.
+/// Requires 1 <= steps_u, steps_v <= 65536. `out` is cleared first.
 void tessellate_uniform(const PatchModel& model, int steps_u, int steps_v, Mesh& out);
 
-// Uniform at equal measured error: the fewest steps N (steps_u = steps_v = N,
-// 1 <= N <= max_steps) whose measured error (error.h) is at most
-// `max_error_px`, found by doubling and then bisection. The error falls as N
-// grows, up to rounding, so the result meets the bound and N - 1 does not;
-// max_steps when nothing meets it. `scratch` ends up holding some tried mesh.
+/// Uniform at equal measured error: the fewest steps N (steps_u = steps_v = N,
+/// 1 <= N <= max_steps) whose measured error (error.h) is at most
+/// `max_error_px`, found by doubling and then bisection. The error falls as N
+/// grows, up to rounding, so the result meets the bound and N - 1 does not;
+/// max_steps when nothing meets it. `scratch` ends up holding some tried mesh.
 int fewest_uniform_steps(const PatchModel& model, const ScreenProjection& view, double max_error_px,
                          int max_steps, Mesh& scratch);
 
