@@ -4,6 +4,7 @@
 #include "casteljau/svg/reader.h"
 #include "corpus.h"
 
+#include <algorithm>
 #include <cstring>
 #include <gtest/gtest.h>
 
@@ -125,6 +126,70 @@ TEST(PartialRender, ASmallRegionFlattensOnlyTheShapesCrossingIt) {
     EXPECT_GT(part.flatten.curves_in, 0u);
     EXPECT_LE(part.flatten.curves_in * 1600, full.flatten.curves_in * 4)
         << "part " << part.flatten.curves_in << " full " << full.flatten.curves_in;
+}
+
+TEST(DrawingHit, ShapeAtFindsTheTopmostFillOrStroke) {
+    Drawing d(200, 200);
+    Path square;
+    square.move_to({0, 0});
+    square.line_to({100, 0});
+    square.line_to({100, 100});
+    square.line_to({0, 100});
+    square.close();
+    const auto below = d.fill(square, Paint::solid({1, 0, 0, 1}), Affine::translate({10, 10}));
+    // A circle of radius 40 around (110, 110), scaled 2x from radius 20.
+    Path circle;
+    circle.move_to({20, 0});
+    circle.arc_to({20, 20}, 0, true, true, {-20, 0});
+    circle.arc_to({20, 20}, 0, true, true, {20, 0});
+    circle.close();
+    const auto above = d.fill(circle, Paint::solid({0, 0, 1, 1}),
+                              Affine::translate({110, 110}) * Affine::scale(2));
+    StrokeGeometry g;
+    g.width = 2;
+    Path line;
+    line.move_to({150, 20});
+    line.line_to({190, 20});
+    const auto stroked = d.stroke(line, Paint::solid({0, 0, 0, 1}), g);
+    EXPECT_EQ(d.shape_at({20, 20}), below);
+    EXPECT_EQ(d.shape_at({105, 105}), above);          // both cover it: the later one
+    EXPECT_EQ(d.shape_at({110, 110 + 39.999}), above); // exact on the arc
+    EXPECT_EQ(d.shape_at({110 + 35, 110 + 35}), std::nullopt);
+    EXPECT_EQ(d.shape_at({170, 21.4}), stroked); // 0.4 px outside the 1 px half width
+    EXPECT_EQ(d.shape_at({170, 22}), std::nullopt);
+    EXPECT_EQ(d.shape_at({195, 195}), std::nullopt);
+    d.remove(above);
+    EXPECT_EQ(d.shape_at({105, 105}), below);
+}
+
+TEST(DrawingHit, ShapesInSelectsWhatTheRubberBandTouches) {
+    Drawing d(300, 300);
+    Rng rng(31);
+    for (int i = 0; i < 60; ++i) d.add(random_shape(rng, 260));
+    const Rect band{100, 120, 140, 170};
+    const std::vector<Drawing::ShapeId> hits = d.shapes_in(band);
+    EXPECT_FALSE(hits.empty());
+    // No unselected shape draws on a pixel inside the band; every selected
+    // one draws inside it, grown by a pixel (it may just touch the band).
+    const auto coverage = [](const Canvas& c, int x0, int y0, int x1, int y1) {
+        float sum = 0;
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) sum += c.row(y)[x].a;
+        return sum;
+    };
+    for (std::size_t i = 0; i < d.size(); ++i) {
+        Drawing one(300, 300);
+        one.add(d.shape(i));
+        Canvas c(300, 300);
+        one.render(c, {});
+        const bool selected = std::find(hits.begin(), hits.end(), i) != hits.end();
+        if (!selected) {
+            EXPECT_EQ(coverage(c, 100, 120, 140, 170), 0.0f) << "shape " << i;
+        } else {
+            EXPECT_GT(coverage(c, 99, 119, 141, 171), 0.0f) << "shape " << i;
+        }
+    }
+    EXPECT_LT(hits.size(), d.size());
 }
 
 } // namespace

@@ -1,6 +1,10 @@
 #include "casteljau/render/drawing.h"
 
 #include "casteljau/geom/pixel_index.h"
+#include "casteljau/hit/rect_hit.h"
+#include "casteljau/hit/stroke_hit.h"
+#include "casteljau/hit/winding.h"
+#include "casteljau/stroke/stroker.h"
 
 #include <algorithm>
 #include <cstring>
@@ -57,6 +61,56 @@ PixelRect Drawing::damage(ShapeId id) const {
     const PixelRect r{floor_in(b.x0, 0, width_), floor_in(b.y0, 0, height_),
                       ceil_in(b.x1, 0, width_), ceil_in(b.y1, 0, height_)};
     return r.width() > 0 && r.height() > 0 ? r : PixelRect{};
+}
+
+namespace {
+
+// Whether the stroke's outline (built to 0.01 px, caps, joins and dashes as
+// drawn) meets the device rectangle `r`.
+bool stroke_intersects_rect(const Shape& s, const Rect& r) {
+    constexpr double kTolerancePx = 0.01;
+    std::vector<Polygon> outline;
+    stroke_outline(s.path, s.stroke->geometry, kTolerancePx / s.transform.max_scale(), outline);
+    Path device;
+    for (const Polygon& poly : outline) {
+        if (poly.empty()) continue;
+        device.move_to(s.transform * poly[0]);
+        for (std::size_t k = 1; k < poly.size(); ++k) device.line_to(s.transform * poly[k]);
+        device.close();
+    }
+    return fill_intersects_rect(device, r, FillRule::NonZero);
+}
+
+} // namespace
+
+std::optional<Drawing::ShapeId> Drawing::shape_at(Point p, double tolerance) const {
+    for (std::size_t i = boxes_.size(); i-- > 0;) {
+        if (!boxes_[i].inflated(tolerance).contains(p)) continue;
+        const Shape& s = shape(i);
+        // Hit-tests run in the shape's own coordinates, where its curves are
+        // exact; the pixel tolerance becomes user units at the largest stretch.
+        const Affine to_user = s.transform.inverse();
+        const Point q = to_user * p;
+        if (s.fill && fill_contains(s.path, q, s.fill->rule)) return i;
+        if (s.stroke &&
+            stroke_distance(s.path, s.stroke->geometry, q) <= tolerance * to_user.max_scale())
+            return i;
+    }
+    return std::nullopt;
+}
+
+std::vector<Drawing::ShapeId> Drawing::shapes_in(const Rect& r) const {
+    std::vector<ShapeId> hits;
+    for (std::size_t i = 0; i < boxes_.size(); ++i) {
+        if (!boxes_[i].intersects(r)) continue;
+        const Shape& s = shape(i);
+        Path device = s.path; // affine maps are exact on the control points
+        device.transform(s.transform);
+        if ((s.fill && fill_intersects_rect(device, r, s.fill->rule)) ||
+            (s.stroke && stroke_intersects_rect(s, r)))
+            hits.push_back(i);
+    }
+    return hits;
 }
 
 RenderStats Drawing::render(Canvas& canvas, Premul background, const RenderOptions& options,

@@ -27,6 +27,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace casteljau {
@@ -74,6 +75,13 @@ class Drawing {
     PixelRect remove(ShapeId id) { return replace(id, Shape{}); }
     /// The pixels shape `id` can change, clipped to the canvas.
     PixelRect damage(ShapeId id) const;
+    /// The topmost shape whose fill holds `p` (device pixels, exact on the curves)
+    /// or whose stroke lies within `tolerance` px of it; none over empty canvas.
+    std::optional<ShapeId> shape_at(Point p, double tolerance = 0.5) const;
+    /// The shapes whose fill or stroke meets `r` (device pixels), in drawing order:
+    /// rubber-band selection. Fills are tested exactly on their curves, strokes
+    /// on their outline (caps, joins and dashes as drawn) to within 0.01 px.
+    std::vector<ShapeId> shapes_in(const Rect& r) const;
     /// The drawing as a scene (top-level shapes in order), for Renderer or BandRenderer.
     const Scene& scene() const { return scene_; }
 
