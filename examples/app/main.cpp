@@ -37,8 +37,7 @@ int main(int argc, char** argv) {
     BezierSpline spline = BezierSpline::from_subpath(heart.subpaths()[0]);
     spline.move_anchor(0, {0, 110});
     Path edited;
-    for (const Segment& s : spline.to_subpath().segments) edited.append(s);
-    edited.close();
+    edited.add_subpath(spline.to_subpath());
     Shape moved = drawing.shape(small);
     moved.path = edited;
     const PixelRect dirty = drawing.replace(small, moved);

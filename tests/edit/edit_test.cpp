@@ -164,7 +164,11 @@ TEST(BezierSpline, SubpathRoundTripAndInferredModes) {
         EXPECT_EQ(s.anchor(i).mode, JointMode::Symmetric) << i;
         EXPECT_EQ(s.continuity(i, 1e-7), Continuity::C2) << i;
     }
-    const Subpath back = s.to_subpath();
+    Path path;
+    path.add_subpath(s.to_subpath());
+    ASSERT_EQ(path.subpaths().size(), 1u);
+    const Subpath& back = path.subpaths()[0];
+    EXPECT_TRUE(back.closed);
     ASSERT_EQ(back.segments.size(), c2.segments.size());
     for (std::size_t i = 0; i < back.segments.size(); ++i)
         EXPECT_TRUE(std::get<CubicBez>(back.segments[i]) == std::get<CubicBez>(c2.segments[i]));

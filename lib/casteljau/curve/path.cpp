@@ -145,6 +145,12 @@ void Path::arc_to(Vec2 radii, double x_rotation_deg, bool large_arc, bool sweep,
     for (int i = 0; i < n; ++i) append(pieces[i]);
 }
 
+void Path::add_subpath(const Subpath& sp) {
+    move_to(sp.start);
+    for (const Segment& seg : sp.segments) append(seg);
+    if (sp.closed) close();
+}
+
 void Path::close() {
     if (!open_) return;
     Subpath& s = subpaths_.back();

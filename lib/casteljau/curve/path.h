@@ -77,6 +77,9 @@ class Path {
     /// Appends a segment as it is. It should start at the current point; with
     /// no open subpath, one starts at the segment's start.
     void append(const Segment& s);
+    /// Appends a whole subpath (e.g. one built by BezierSpline::to_subpath or
+    /// interpolate_c2) as move_to, its segments, and close() when it is closed.
+    void add_subpath(const Subpath& sp);
 
     /// Where the next segment starts.
     Point current_point() const { return current_; }
