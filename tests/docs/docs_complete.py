@@ -5,11 +5,16 @@ have at least a one-line description, and every doc comment must parse.
 
 Usage: docs_complete.py DOXYGEN DOXYFILE WARNINGS_LOG
 """
+import os
 import re
 import subprocess
 import sys
 
 doxygen, doxyfile, log = sys.argv[1:4]
+# Doxygen opens its warning log before it creates its output folder.
+os.makedirs(os.path.dirname(log), exist_ok=True)
+if os.path.exists(log):
+    os.remove(log)
 run = subprocess.run([doxygen, doxyfile], capture_output=True, text=True)
 if run.returncode != 0:
     sys.exit(f"doxygen failed ({run.returncode}):\n{run.stderr}")
