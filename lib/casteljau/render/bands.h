@@ -22,6 +22,7 @@ namespace casteljau {
 /// 128 rows of a 1024 px wide frame are 2 MiB of float RGBA, about a mid-level
 /// cache; 64 and 256 measured slower on the dense scene (bench/render).
 inline constexpr int kBandRows = 128;
+static_assert(kBandRows % kStrokeStripRows == 0, "a band is whole stroke strips");
 
 /// Renders a frame in horizontal bands, on one thread or several, bit-identically.
 class BandRenderer {

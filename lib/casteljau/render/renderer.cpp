@@ -177,26 +177,35 @@ void Renderer::draw_stroke(const Shape& s, const Affine& m, const PixelRect& cli
         geometry = &hairline_geometry;
         hairline = float(device_width);
     }
-    auto t = Clock::now();
-    // The device tolerance in user units: divided by the largest stretch.
-    polygons_.clear();
-    // The frame's pixels in user space, one pixel wider for the antialiased
-    // edge: dashes beyond it are not built. The frame's, not the target's:
-    // the outline's samples and dash ends depend on that box (clipped chords,
-    // halved curves), and every band or tile must get the same outline.
-    const Rect pixels{double(clip.x0 - 1), double(clip.y0 - 1), double(clip.x1 + 1),
-                      double(clip.y1 + 1)};
-    stroke_outline(s.path, *geometry, options_->flatten.tolerance / m.max_scale(), polygons_,
-                   device_box(pixels, m.inverse()));
-    edges_.reset(clip, target.origin_y(), target.origin_y() + target.height());
-    for (const Polygon& poly : polygons_) {
-        for (std::size_t i = 0; i < poly.size(); ++i)
-            edges_.add_line(m * poly[i], m * poly[(i + 1) % poly.size()]);
-        stats_.flatten.segments_out += poly.size();
+    // The outline is built only near the pixels it is drawn on, and its
+    // samples and dash ends depend on that box (clipped chords, halved
+    // curves). So that every band or tile gets the same outline for a row,
+    // the box is a fixed strip of kStrokeStripRows frame rows (one pixel
+    // wider for the antialiased edge), and a target crossing several strips
+    // draws each strip's rows from that strip's outline.
+    const int top = std::max(clip.y0, target.origin_y());
+    const int bottom = std::min(clip.y1, target.origin_y() + target.height());
+    for (int y0 = top; y0 < bottom;) {
+        const int strip = clip.y0 + (y0 - clip.y0) / kStrokeStripRows * kStrokeStripRows;
+        const int y1 = std::min(bottom, strip + kStrokeStripRows);
+        const auto t = Clock::now();
+        polygons_.clear();
+        const Rect pixels{double(clip.x0 - 1), double(strip - 1), double(clip.x1 + 1),
+                          double(std::min(clip.y1, strip + kStrokeStripRows) + 1)};
+        // The device tolerance in user units: divided by the largest stretch.
+        stroke_outline(s.path, *geometry, options_->flatten.tolerance / m.max_scale(), polygons_,
+                       device_box(pixels, m.inverse()));
+        edges_.reset(clip, y0, y1);
+        for (const Polygon& poly : polygons_) {
+            for (std::size_t i = 0; i < poly.size(); ++i)
+                edges_.add_line(m * poly[i], m * poly[(i + 1) % poly.size()]);
+            stats_.flatten.segments_out += poly.size();
+        }
+        stats_.flatten_ms += ms_since(t);
+        paint(s, st.color, st.gradient.get(), st.opacity * opacity * hairline, FillRule::NonZero,
+              target);
+        y0 = y1;
     }
-    stats_.flatten_ms += ms_since(t);
-    paint(s, st.color, st.gradient.get(), st.opacity * opacity * hairline, FillRule::NonZero,
-          target);
 }
 
 double Renderer::stroke_reach(const Shape& s, const Affine& m) {

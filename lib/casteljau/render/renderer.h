@@ -20,6 +20,11 @@
 
 namespace casteljau {
 
+/// Stroke outlines are built per strip of this many frame rows (see
+/// draw_stroke): a band of kBandRows rows (bands.h) is whole strips, so it
+/// builds each outline once.
+inline constexpr int kStrokeStripRows = 128;
+
 /// How to render: flattening, antialiasing, statistics, gradient interpolation.
 struct RenderOptions {
     FlattenOptions flatten;
