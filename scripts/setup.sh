@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libpugixml-dev libcli11-dev
   librsvg2-bin python3 doxygen
+  libcairo2-dev
   clang libclang-rt-14-dev
 )
 
