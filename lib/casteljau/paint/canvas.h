@@ -36,6 +36,10 @@ class Canvas {
     Canvas(int width, int height, int ox = 0, int oy = 0);
     /// Resizes (keeping storage when large enough) and clears to `clear`.
     void reset(int width, int height, int ox = 0, int oy = 0, Premul clear = {});
+    /// Makes this canvas a view of `rows` whole rows of `parent` from row y0
+    /// (its own storage is kept, unused), cleared to `clear`: a band drawn in
+    /// place, with no copy. Valid while the parent keeps its size.
+    void view_rows(Canvas& parent, int y0, int rows, Premul clear);
 
     /// Width in pixels.
     int width() const { return w_; }
@@ -46,9 +50,11 @@ class Canvas {
     /// Row of the parent (or frame) where this canvas starts.
     int origin_y() const { return oy_; }
     /// The pixels of row y (0 <= y < height()).
-    Premul* row(int y) { return px_.data() + std::size_t(y) * std::size_t(w_); }
+    Premul* row(int y) { return pixels() + std::size_t(y) * std::size_t(w_); }
     /// The pixels of row y (0 <= y < height()), read-only.
-    const Premul* row(int y) const { return px_.data() + std::size_t(y) * std::size_t(w_); }
+    const Premul* row(int y) const {
+        return (view_ ? view_ : px_.data()) + std::size_t(y) * std::size_t(w_);
+    }
 
     /// Sets every pixel to `color`.
     void fill(Premul color);
@@ -59,7 +65,9 @@ class Canvas {
     void composite_layer(const Canvas& layer, float opacity);
 
   private:
+    Premul* pixels() { return view_ ? view_ : px_.data(); }
     std::vector<Premul> px_;
+    Premul* view_ = nullptr; // another canvas's rows (view_rows), else null
     int w_ = 0, h_ = 0, ox_ = 0, oy_ = 0;
 };
 

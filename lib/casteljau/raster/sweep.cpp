@@ -24,11 +24,18 @@ void sweep_row(CoverageRow& row, int y, int x_offset, FillRule rule, std::vector
     if (scratch.size() < std::size_t(row.width())) scratch.resize(std::size_t(row.width()));
     float* acc = row.data();
     float* cov = scratch.data();
+    // The running sum changes only where an edge deposited something; between
+    // those columns the coverage is constant, so runs of zeros are filled.
     float s = 0;
-    for (int i = begin; i < end; ++i) {
+    for (int i = begin; i < end;) {
         s += acc[i];
         acc[i] = 0;
-        cov[i] = apply_fill_rule(s, rule);
+        const float c = apply_fill_rule(s, rule);
+        cov[i++] = c;
+        int j = i;
+        while (j < end && acc[j] == 0.0f) ++j;
+        std::fill(cov + i, cov + j, c);
+        i = j;
     }
     std::fill(acc + end, acc + row.end(), 0.0f);
     row.clear_range();

@@ -1,7 +1,6 @@
 #include "casteljau/render/bands.h"
 
 #include <algorithm>
-#include <cstring>
 #include <thread>
 
 namespace casteljau {
@@ -15,18 +14,16 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
     bands_.resize(std::size_t(n));
     const PixelRect frame{0, 0, w, h};
     std::vector<RenderStats> stats(static_cast<std::size_t>(n));
-    // Thread t renders bands t, t + n, t + 2n, ... into its own band canvas
-    // and copies each into the frame (the rows of different bands are disjoint).
+    // Thread t renders bands t, t + n, t + 2n, ... in place: its band canvas
+    // is a view of the band's rows of the frame (the rows of different bands
+    // are disjoint, and a band's rows are contiguous in memory).
     const auto work = [&](int t) {
         Canvas& band = bands_[std::size_t(t)];
         RenderStats& total = stats[std::size_t(t)];
         for (int b = t; b < bands; b += n) {
             const int y0 = b * kBandRows, y1 = std::min(h, y0 + kBandRows);
-            band.reset(w, y1 - y0, 0, y0, background);
+            band.view_rows(canvas, y0, y1 - y0, background);
             total += renderers_[std::size_t(t)]->render(scene, view, band, options, frame);
-            for (int y = y0; y < y1; ++y)
-                std::memcpy(static_cast<void*>(canvas.row(y)), band.row(y - y0),
-                            std::size_t(w) * sizeof(Premul));
         }
     };
     if (n == 1) {
