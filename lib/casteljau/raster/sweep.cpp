@@ -33,6 +33,10 @@ void sweep_row(CoverageRow& row, int y, int x_offset, FillRule rule, std::vector
         const float c = apply_fill_rule(s, rule);
         cov[i++] = c;
         int j = i;
+        // Four columns per test: one branch per four, not one per column.
+        while (j + 4 <= end && ((acc[j] == 0.0f) & (acc[j + 1] == 0.0f) & (acc[j + 2] == 0.0f) &
+                                (acc[j + 3] == 0.0f)))
+            j += 4;
         while (j < end && acc[j] == 0.0f) ++j;
         std::fill(cov + i, cov + j, c);
         i = j;

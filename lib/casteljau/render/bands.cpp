@@ -1,6 +1,7 @@
 #include "casteljau/render/bands.h"
 
 #include <algorithm>
+#include <atomic>
 #include <thread>
 
 namespace casteljau {
@@ -14,13 +15,16 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
     bands_.resize(std::size_t(n));
     const PixelRect frame{0, 0, w, h};
     std::vector<RenderStats> stats(static_cast<std::size_t>(n));
-    // Thread t renders bands t, t + n, t + 2n, ... in place: its band canvas
-    // is a view of the band's rows of the frame (the rows of different bands
-    // are disjoint, and a band's rows are contiguous in memory).
+    // Each thread takes the next band not yet taken, so a thread that drew
+    // a light band goes on while another draws a dense one. A band's pixels
+    // do not depend on which thread draws it. Bands are drawn in place: the
+    // band canvas is a view of the band's rows of the frame (the rows of
+    // different bands are disjoint, and a band's rows are contiguous).
+    std::atomic<int> next{0};
     const auto work = [&](int t) {
         Canvas& band = bands_[std::size_t(t)];
         RenderStats& total = stats[std::size_t(t)];
-        for (int b = t; b < bands; b += n) {
+        for (int b = next++; b < bands; b = next++) {
             const int y0 = b * kBandRows, y1 = std::min(h, y0 + kBandRows);
             band.view_rows(canvas, y0, y1 - y0, background);
             total += renderers_[std::size_t(t)]->render(scene, view, band, options, frame);

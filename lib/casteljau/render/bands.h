@@ -1,14 +1,15 @@
 // Rendering in horizontal bands, on one thread or several.
 //
-// The frame is cut into bands of kBandRows rows, dealt to the threads in
-// turn; a thread renders the whole scene into one band after another with
-// its own Renderer, in place (the band canvas is a view of the frame's rows,
-// Canvas::view_rows). Bands pay even on one thread: a band (kBandRows x
-// width x 16 bytes) stays in cache while every shape crossing it is
-// composited, where a whole float frame would not (measured in bench/render).
-// Edge geometry is always clipped to the frame, never to a band (see
-// EdgeList), and every pixel is composited by the same shapes
-// in the same order, so the result is bit-identical to one thread (tested).
+// The frame is cut into bands of kBandRows rows, which the threads take one
+// at a time as they finish the last. A thread renders the whole scene into
+// each of its bands with its own Renderer, in place (the band canvas is a
+// view of the frame's rows, Canvas::view_rows). Bands pay even on one
+// thread: a band (kBandRows x width x 16 bytes) stays in cache while every
+// shape crossing it is composited, where a whole float frame would not
+// (measured in bench/render). Edge geometry is always clipped to the frame,
+// never to a band (see EdgeList), and every pixel is composited by the same
+// shapes in the same order, so the result is bit-identical to one thread
+// (tested).
 // Flattening is repeated per band for shapes that cross several bands; pieces
 // wholly outside a band are culled before flattening.
 #pragma once
