@@ -7,6 +7,7 @@
 #   out/svg/stats.json      their render statistics (one JSON object per file)
 #   out/compare/            `casteljau compare` on the curves example: images, heat map, report.md
 #   out/patch/              `casteljau patch` on the patch examples: shaded, wireframe, OBJ meshes, stats.json
+#   out/app.png             examples/app: the library used as a drawing application would
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -17,6 +18,7 @@ cmake --build build -j "$(nproc)"
 mkdir -p out
 rm -f out/patch/stats.json
 build/examples/curves_image out/curves.png 0.25 | tee out/curves.txt
+build/examples/app/casteljau_app out/app.png
 while read -r name data; do
   for method in adaptive uniform; do
     build/cli/casteljau flatten --path "$data" --flatten "$method" --json > "out/flatten-$name-$method.json"
