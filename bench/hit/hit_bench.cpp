@@ -9,56 +9,56 @@
 #include "corpus.h"
 
 #include <benchmark/benchmark.h>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 namespace casteljau {
 namespace {
 
-void BM_NearestPointCubic(benchmark::State& state) {
-    testing::Rng rng(1);
-    std::vector<CubicBez> curves;
-    std::vector<Point> queries;
-    for (int i = 0; i < 256; ++i) {
-        curves.push_back(testing::random_cubic(rng, 500));
-        queries.push_back(rng.point(500));
-    }
+// Runs `query` over 256 seeded inputs made by `make`, round robin.
+template <class Make, class Query>
+void over_inputs(benchmark::State& state, unsigned seed, Make make, Query query) {
+    testing::Rng rng(seed);
+    std::vector<decltype(make(rng))> inputs;
+    for (int i = 0; i < 256; ++i) inputs.push_back(make(rng));
     std::size_t i = 0;
     for (auto _ : state) {
-        benchmark::DoNotOptimize(nearest_point(Segment{curves[i % 256]}, queries[i % 256]));
-        ++i;
+        const auto& in = inputs[i++ % inputs.size()];
+        benchmark::DoNotOptimize(std::apply(query, in));
     }
+}
+
+void BM_NearestPointCubic(benchmark::State& state) {
+    over_inputs(
+        state, 1,
+        [](testing::Rng& rng) {
+            return std::pair{Segment{testing::random_cubic(rng, 500)}, rng.point(500)};
+        },
+        [](const Segment& s, Point q) { return nearest_point(s, q); });
 }
 BENCHMARK(BM_NearestPointCubic);
 
 void BM_FillContainsBlob(benchmark::State& state) {
-    testing::Rng rng(2);
-    std::vector<Path> blobs;
-    std::vector<Point> queries;
-    for (int i = 0; i < 256; ++i) {
-        blobs.push_back(testing::random_blob(rng, 500, 8));
-        queries.push_back(rng.point(500));
-    }
-    std::size_t i = 0;
-    for (auto _ : state) {
-        benchmark::DoNotOptimize(fill_contains(blobs[i % 256], queries[i % 256]));
-        ++i;
-    }
+    over_inputs(
+        state, 2,
+        [](testing::Rng& rng) {
+            return std::pair{testing::random_blob(rng, 500, 8), rng.point(500)};
+        },
+        [](const Path& p, Point q) { return fill_contains(p, q); });
 }
 BENCHMARK(BM_FillContainsBlob);
 
 void BM_CubicIntersectsRect(benchmark::State& state) {
-    testing::Rng rng(3);
-    std::vector<CubicBez> curves;
-    std::vector<Rect> rects;
-    for (int i = 0; i < 256; ++i) {
-        curves.push_back(testing::random_cubic(rng, 500));
-        const Point a = rng.point(500);
-        rects.push_back(Rect::from_points(a, a + Vec2{rng.uniform(0, 100), rng.uniform(0, 100)}));
-    }
-    std::size_t i = 0;
-    for (auto _ : state) {
-        benchmark::DoNotOptimize(segment_intersects_rect(Segment{curves[i % 256]}, rects[i % 256]));
-        ++i;
-    }
+    over_inputs(
+        state, 3,
+        [](testing::Rng& rng) {
+            const Segment s = testing::random_cubic(rng, 500);
+            const Point a = rng.point(500);
+            return std::pair{
+                s, Rect::from_points(a, a + Vec2{rng.uniform(0, 100), rng.uniform(0, 100)})};
+        },
+        [](const Segment& s, const Rect& r) { return segment_intersects_rect(s, r); });
 }
 BENCHMARK(BM_CubicIntersectsRect);
 

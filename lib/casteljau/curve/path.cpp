@@ -145,6 +145,13 @@ void Path::arc_to(Vec2 radii, double x_rotation_deg, bool large_arc, bool sweep,
     for (int i = 0; i < n; ++i) append(pieces[i]);
 }
 
+std::optional<Line> fill_closing_line(const Subpath& sp) {
+    if (sp.closed || sp.segments.empty()) return std::nullopt;
+    const Point end = segment_end(sp.segments.back());
+    if (end == sp.start) return std::nullopt;
+    return Line{end, sp.start};
+}
+
 void Path::add_subpath(const Subpath& sp) {
     move_to(sp.start);
     for (const Segment& seg : sp.segments) append(seg);

@@ -17,6 +17,7 @@
 #include "casteljau/curve/conic.h"
 
 #include <cstddef>
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -45,6 +46,10 @@ struct Subpath {
     std::vector<Segment> segments;
     bool closed = false;
 };
+
+/// The line that closes a subpath for filling (SVG 1.1, 11.3): from its end
+/// back to its start, when it is open and does not end at its start.
+std::optional<Line> fill_closing_line(const Subpath& sp);
 
 /// How smoothly one segment joins the next, from weakest to strongest; each
 /// level implies the ones before it (G1: same position and unit tangent; C1:

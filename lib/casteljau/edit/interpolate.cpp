@@ -6,17 +6,20 @@ namespace casteljau {
 
 namespace {
 
-// Solves x_{i-1} + diag_i x_i + x_{i+1} = r_i (x_{-1} = x_n = 0) by the Thomas
-// algorithm; `diag` is overwritten.
-void solve_tridiagonal(std::vector<double>& diag, std::vector<Vec2>& r) {
+// The Thomas algorithm for x_{i-1} + diag_i x_i + x_{i+1} = r_i (x_{-1} =
+// x_n = 0), in two steps so that one matrix serves several right-hand sides:
+// the pivots of the elimination, then a solve in place for each r.
+std::vector<double> thomas_pivots(std::vector<double> diag) {
+    for (std::size_t i = 1; i < diag.size(); ++i) diag[i] -= 1.0 / diag[i - 1];
+    return diag;
+}
+
+template <class T> // double or Vec2
+void thomas_solve(const std::vector<double>& pivot, std::vector<T>& r) {
     const std::size_t n = r.size();
-    for (std::size_t i = 1; i < n; ++i) {
-        const double m = 1.0 / diag[i - 1];
-        diag[i] -= m;
-        r[i] -= r[i - 1] * m;
-    }
-    r[n - 1] = r[n - 1] * (1.0 / diag[n - 1]);
-    for (std::size_t i = n - 1; i-- > 0;) r[i] = (r[i] - r[i + 1]) * (1.0 / diag[i]);
+    for (std::size_t i = 1; i < n; ++i) r[i] -= r[i - 1] * (1.0 / pivot[i - 1]);
+    r[n - 1] = r[n - 1] * (1.0 / pivot[n - 1]);
+    for (std::size_t i = n - 1; i-- > 0;) r[i] = (r[i] - r[i + 1]) * (1.0 / pivot[i]);
 }
 
 // Solves D_{i-1} + 4 D_i + D_{i+1} = rhs_i with indices mod n (n >= 3): the
@@ -28,16 +31,15 @@ std::vector<Vec2> solve_cyclic(std::vector<Vec2> rhs) {
     std::vector<double> diag(n, 4.0);
     diag[0] -= gamma;
     diag[n - 1] -= 1.0 / gamma;
-    std::vector<double> diag_u = diag;
-    std::vector<Vec2> u(n);
-    u[0] = {gamma, 0};
-    u[n - 1] = {1, 0};
-    solve_tridiagonal(diag, rhs);
-    solve_tridiagonal(diag_u, u);
-    // Only the x part of u is used: the right-hand side (gamma, 0, .., 1) is scalar.
-    const double denom = 1.0 + u[0].x + u[n - 1].x / gamma;
+    const std::vector<double> pivot = thomas_pivots(std::move(diag));
+    std::vector<double> u(n, 0.0);
+    u[0] = gamma;
+    u[n - 1] = 1.0;
+    thomas_solve(pivot, rhs);
+    thomas_solve(pivot, u);
+    const double denom = 1.0 + u[0] + u[n - 1] / gamma;
     const Vec2 fact = (rhs[0] + rhs[n - 1] * (1.0 / gamma)) * (1.0 / denom);
-    for (std::size_t i = 0; i < n; ++i) rhs[i] -= fact * u[i].x;
+    for (std::size_t i = 0; i < n; ++i) rhs[i] -= fact * u[i];
     return rhs;
 }
 
@@ -85,12 +87,11 @@ Subpath interpolate_c2(std::span<const Point> p, bool closed) {
         d[1] = q[0];
         d[n + 1] = q[n];
         if (n >= 2) {
-            std::vector<double> diag(n - 1, 4.0);
             std::vector<Vec2> rhs(n - 1);
             for (std::size_t i = 1; i < n; ++i) rhs[i - 1] = q[i].to_vec() * 6.0;
             rhs.front() -= q[0].to_vec();
             rhs.back() -= q[n].to_vec();
-            solve_tridiagonal(diag, rhs);
+            thomas_solve(thomas_pivots(std::vector<double>(n - 1, 4.0)), rhs);
             for (std::size_t i = 1; i < n; ++i) d[i + 1] = Point{} + rhs[i - 1];
         }
         d[0] = d[1] + (d[1] - d[2]);

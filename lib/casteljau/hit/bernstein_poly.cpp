@@ -2,6 +2,7 @@
 
 #include "casteljau/curve/roots.h"
 
+#include <type_traits>
 #include <variant>
 
 namespace casteljau {
@@ -58,24 +59,20 @@ HomogeneousSegment from_points(const std::array<Point, N>& p, const std::array<d
     return h;
 }
 
-template <int N>
-HomogeneousSegment from_bez(const Bez<N>& b, Point origin) {
-    std::array<double, N + 1> ones;
-    ones.fill(1.0);
-    return from_points(b.p, ones, origin);
-}
-
 } // namespace
 
 HomogeneousSegment HomogeneousSegment::from(const Segment& s, Point origin) {
-    if (const Conic* c = std::get_if<Conic>(&s))
-        return from_points(c->control_points(), std::array<double, 3>{1.0, c->w, 1.0}, origin);
     return std::visit(
-        [&](const auto& b) -> HomogeneousSegment {
-            if constexpr (std::is_same_v<std::decay_t<decltype(b)>, Conic>)
-                return {};
-            else
-                return from_bez(b, origin);
+        [&](const auto& c) {
+            using Curve = std::decay_t<decltype(c)>;
+            if constexpr (std::is_same_v<Curve, Conic>) {
+                return from_points(c.control_points(), std::array<double, 3>{1.0, c.w, 1.0},
+                                   origin);
+            } else {
+                std::array<double, Curve::degree + 1> ones;
+                ones.fill(1.0);
+                return from_points(c.p, ones, origin);
+            }
         },
         s);
 }

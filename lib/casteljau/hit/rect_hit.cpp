@@ -57,11 +57,10 @@ bool outline_intersects_rect(const Path& path, const Rect& r) {
 bool fill_intersects_rect(const Path& path, const Rect& r, FillRule rule) {
     if (r.is_empty()) return false;
     for (const Subpath& sp : path.subpaths()) {
-        if (sp.segments.empty()) continue;
         for (const Segment& s : sp.segments)
             if (segment_intersects_rect(s, r)) return true;
-        const Point end = segment_end(sp.segments.back());
-        if (end != sp.start && segment_intersects_rect(Line{end, sp.start}, r)) return true;
+        const auto line = fill_closing_line(sp);
+        if (line && segment_intersects_rect(*line, r)) return true;
     }
     // No boundary crosses the rectangle: it is wholly inside or wholly outside.
     return fill_contains(path, r.min(), rule);

@@ -1,5 +1,6 @@
 #include "casteljau/hit/stroke_hit.h"
 
+#include "casteljau/hit/winding.h"
 #include "casteljau/stroke/stroker.h"
 
 #include <algorithm>
@@ -7,39 +8,34 @@
 
 namespace casteljau {
 
-namespace {
-
-// Signed crossings of the polygon edge a -> b with the ray from p towards +x,
-// with the half-open rule (a vertex on the ray counts as above it).
-int edge_crossing(Point a, Point b, Point p) {
-    const bool a_above = a.y >= p.y, b_above = b.y >= p.y;
-    if (a_above == b_above) return 0;
-    const double x = a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x);
-    return x > p.x ? (b_above ? 1 : -1) : 0;
-}
-
-} // namespace
-
-double stroke_distance(const Path& path, const StrokeGeometry& style, Point p, double tolerance) {
+Path stroke_outline_path(const Path& path, const StrokeGeometry& style, double tolerance) {
     std::vector<Polygon> outline;
     stroke_outline(path, style, tolerance, outline);
-    int winding = 0;
+    Path out;
+    for (const Polygon& poly : outline) {
+        if (poly.empty()) continue;
+        out.move_to(poly[0]);
+        for (std::size_t i = 1; i < poly.size(); ++i) out.line_to(poly[i]);
+        out.close();
+    }
+    return out;
+}
+
+double stroke_distance(const Path& path, const StrokeGeometry& style, Point p, double tolerance) {
+    const Path outline = stroke_outline_path(path, style, tolerance);
+    if (fill_contains(outline, p, FillRule::NonZero)) return 0.0;
     double best = std::numeric_limits<double>::infinity();
-    for (const Polygon& poly : outline)
-        for (std::size_t i = 0; i < poly.size(); ++i) {
-            const Point a = poly[i], b = poly[(i + 1) % poly.size()];
-            winding += edge_crossing(a, b, p);
-            best = std::min(best, distance_to_segment(p, a, b));
+    for (const Subpath& sp : outline.subpaths())
+        for (const Segment& s : sp.segments) {
+            const Line& l = std::get<Line>(s);
+            best = std::min(best, distance_to_segment(p, l.start(), l.end()));
         }
-    return winding != 0 ? 0.0 : best;
+    return best;
 }
 
 Rect stroke_bounds(const Path& path, const StrokeGeometry& style, double tolerance) {
-    std::vector<Polygon> outline;
-    stroke_outline(path, style, tolerance, outline);
-    Rect r = Rect::empty();
-    for (const Polygon& poly : outline)
-        for (Point q : poly) r = r.united(q);
+    // Lines only: the control bounds are the vertices' box.
+    const Rect r = stroke_outline_path(path, style, tolerance).control_bounds();
     return r.is_empty() ? r : r.inflated(tolerance);
 }
 

@@ -1,9 +1,10 @@
 // Hit-testing strokes, and their tight bounds.
 //
 // A stroke is the nonzero fill of its outline polygons (stroke/stroker.h),
-// whose vertices lie on the true outline (offsets are exact at every sample,
-// caps and joins are sampled on their arcs) and whose edges stay within the
-// tolerance of it. So, for the outline built at tolerance `tol`:
+// whose vertices lie on the true stroke (offsets are exact at every sample,
+// caps and joins are sampled on their arcs, inner joins pass through the
+// joint) and whose edges stay within the tolerance of its outline. So, for the outline built at
+// tolerance `tol`:
 // * distance: 0 inside the polygons; outside, the distance to their edges,
 //   within `tol` of the distance to the true stroke;
 // * bounds: the box of the polygons' vertices lies inside the true stroke's
@@ -17,6 +18,11 @@
 #include "casteljau/scene/scene.h"
 
 namespace casteljau {
+
+/// The stroke's outline polygons as a path of closed line subpaths, whose
+/// nonzero fill is the stroke (to within `tolerance`): for the exact hit tests
+/// of winding.h and rect_hit.h.
+Path stroke_outline_path(const Path& path, const StrokeGeometry& style, double tolerance);
 
 /// Distance from `p` to the stroke of `path` (0 inside), within `tolerance`.
 double stroke_distance(const Path& path, const StrokeGeometry& style, Point p,

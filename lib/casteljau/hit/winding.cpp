@@ -16,7 +16,7 @@ bool above(double v) { return v >= 0.0; }
 // by bisection: 64 halvings exhaust a double's resolution in [0, 1].
 double sign_change(const BernsteinPoly& f, double a, double b) {
     const bool at_a = above(f.eval(a));
-    for (int i = 0; i < 64 && b - a > 0.0; ++i) {
+    for (int i = 0; i < 64; ++i) {
         const double m = 0.5 * (a + b);
         if (m <= a || m >= b) break;
         (above(f.eval(m)) == at_a ? a : b) = m;
@@ -64,10 +64,8 @@ int segment_crossings(const Segment& s, Point p) {
 int winding_number(const Path& path, Point p) {
     int winding = 0;
     for (const Subpath& sp : path.subpaths()) {
-        if (sp.segments.empty()) continue;
         for (const Segment& s : sp.segments) winding += segment_crossings(s, p);
-        const Point end = segment_end(sp.segments.back());
-        if (end != sp.start) winding += segment_crossings(Line{end, sp.start}, p);
+        if (const auto line = fill_closing_line(sp)) winding += segment_crossings(*line, p);
     }
     return winding;
 }

@@ -52,9 +52,7 @@ class Canvas {
     /// The pixels of row y (0 <= y < height()).
     Premul* row(int y) { return pixels() + std::size_t(y) * std::size_t(w_); }
     /// The pixels of row y (0 <= y < height()), read-only.
-    const Premul* row(int y) const {
-        return (view_ ? view_ : px_.data()) + std::size_t(y) * std::size_t(w_);
-    }
+    const Premul* row(int y) const { return pixels() + std::size_t(y) * std::size_t(w_); }
 
     /// Sets every pixel to `color`.
     void fill(Premul color);
@@ -66,6 +64,7 @@ class Canvas {
 
   private:
     Premul* pixels() { return view_ ? view_ : px_.data(); }
+    const Premul* pixels() const { return view_ ? view_ : px_.data(); }
     std::vector<Premul> px_;
     Premul* view_ = nullptr; // another canvas's rows (view_rows), else null
     int w_ = 0, h_ = 0, ox_ = 0, oy_ = 0;

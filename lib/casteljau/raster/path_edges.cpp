@@ -97,10 +97,8 @@ FlattenStats add_path_edges(const Path& path, const Affine& to_device,
                 },
                 seg);
         }
-        if (!sub.closed && !sub.segments.empty()) {
-            const Point last = segment_end(sub.segments.back());
-            if (last != sub.start) edges.add_line(to_device * last, to_device * sub.start);
-        }
+        if (const auto line = fill_closing_line(sub))
+            edges.add_line(to_device * line->start(), to_device * line->end());
     }
     return stats;
 }

@@ -4,7 +4,6 @@
 #include "casteljau/hit/rect_hit.h"
 #include "casteljau/hit/stroke_hit.h"
 #include "casteljau/hit/winding.h"
-#include "casteljau/stroke/stroker.h"
 
 #include <algorithm>
 #include <cstring>
@@ -69,15 +68,9 @@ namespace {
 // drawn) meets the device rectangle `r`.
 bool stroke_intersects_rect(const Shape& s, const Rect& r) {
     constexpr double kTolerancePx = 0.01;
-    std::vector<Polygon> outline;
-    stroke_outline(s.path, s.stroke->geometry, kTolerancePx / s.transform.max_scale(), outline);
-    Path device;
-    for (const Polygon& poly : outline) {
-        if (poly.empty()) continue;
-        device.move_to(s.transform * poly[0]);
-        for (std::size_t k = 1; k < poly.size(); ++k) device.line_to(s.transform * poly[k]);
-        device.close();
-    }
+    Path device =
+        stroke_outline_path(s.path, s.stroke->geometry, kTolerancePx / s.transform.max_scale());
+    device.transform(s.transform);
     return fill_intersects_rect(device, r, FillRule::NonZero);
 }
 

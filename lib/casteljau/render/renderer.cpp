@@ -56,10 +56,7 @@ RenderStats Renderer::render(const Scene& scene, const Affine& view, Canvas& can
 
 RenderStats Renderer::render(const Scene& scene, const Affine& view, Canvas& canvas,
                              const RenderOptions& options, const PixelRect& frame) {
-    view_ = view;
-    frame_ = frame;
-    options_ = &options;
-    stats_ = {};
+    begin(view, options, frame);
     draw_group(scene.root, canvas, 0);
     return stats_;
 }
@@ -67,12 +64,16 @@ RenderStats Renderer::render(const Scene& scene, const Affine& view, Canvas& can
 RenderStats Renderer::render_nodes(std::span<const Node* const> nodes, const Affine& view,
                                    Canvas& canvas, const RenderOptions& options,
                                    const PixelRect& frame) {
+    begin(view, options, frame);
+    for (const Node* n : nodes) draw_node(*n, canvas, 0);
+    return stats_;
+}
+
+void Renderer::begin(const Affine& view, const RenderOptions& options, const PixelRect& frame) {
     view_ = view;
     frame_ = frame;
     options_ = &options;
     stats_ = {};
-    for (const Node* n : nodes) draw_node(*n, canvas, 0);
-    return stats_;
 }
 
 Rect Renderer::reach_box(const Shape& s, const Affine& view) {
@@ -143,10 +144,9 @@ void Renderer::draw_shape(const Shape& s, Canvas& target, float opacity) {
     // the target's rows only (see EdgeList); spans are cut to the target's
     // columns when composited (paint). So a band, a layer or a dirty tile
     // gets the same edges and coverage as the whole frame, bit for bit.
-    const PixelRect& clip = frame_;
     if (s.fill) {
         auto t = Clock::now();
-        edges_.reset(clip, target.origin_y(), target.origin_y() + target.height());
+        edges_.reset(frame_, target.origin_y(), target.origin_y() + target.height());
         RenderStats shape;
         shape.flatten =
             add_path_edges(s.path, m, options_->flatten, edges_, options_->measure_error);
@@ -155,11 +155,10 @@ void Renderer::draw_shape(const Shape& s, Canvas& target, float opacity) {
         paint(s, s.fill->color, s.fill->gradient.get(), s.fill->opacity * opacity, s.fill->rule,
               target);
     }
-    if (s.stroke) draw_stroke(s, m, clip, target, opacity);
+    if (s.stroke) draw_stroke(s, m, target, opacity);
 }
 
-void Renderer::draw_stroke(const Shape& s, const Affine& m, const PixelRect& clip, Canvas& target,
-                           float opacity) {
+void Renderer::draw_stroke(const Shape& s, const Affine& m, Canvas& target, float opacity) {
     const Stroke& st = *s.stroke;
     // Hairlines: a stroke narrower than one device pixel is drawn one pixel
     // wide with its opacity scaled by its width, so it keeps its total
@@ -183,19 +182,19 @@ void Renderer::draw_stroke(const Shape& s, const Affine& m, const PixelRect& cli
     // the box is a fixed strip of kStrokeStripRows frame rows (one pixel
     // wider for the antialiased edge), and a target crossing several strips
     // draws each strip's rows from that strip's outline.
-    const int top = std::max(clip.y0, target.origin_y());
-    const int bottom = std::min(clip.y1, target.origin_y() + target.height());
+    const int top = std::max(frame_.y0, target.origin_y());
+    const int bottom = std::min(frame_.y1, target.origin_y() + target.height());
     for (int y0 = top; y0 < bottom;) {
-        const int strip = clip.y0 + (y0 - clip.y0) / kStrokeStripRows * kStrokeStripRows;
+        const int strip = frame_.y0 + (y0 - frame_.y0) / kStrokeStripRows * kStrokeStripRows;
         const int y1 = std::min(bottom, strip + kStrokeStripRows);
         const auto t = Clock::now();
         polygons_.clear();
-        const Rect pixels{double(clip.x0 - 1), double(strip - 1), double(clip.x1 + 1),
-                          double(std::min(clip.y1, strip + kStrokeStripRows) + 1)};
+        const Rect pixels{double(frame_.x0 - 1), double(strip - 1), double(frame_.x1 + 1),
+                          double(std::min(frame_.y1, strip + kStrokeStripRows) + 1)};
         // The device tolerance in user units: divided by the largest stretch.
         stroke_outline(s.path, *geometry, options_->flatten.tolerance / m.max_scale(), polygons_,
                        device_box(pixels, m.inverse()));
-        edges_.reset(clip, y0, y1);
+        edges_.reset(frame_, y0, y1);
         for (const Polygon& poly : polygons_) {
             for (std::size_t i = 0; i < poly.size(); ++i)
                 edges_.add_line(m * poly[i], m * poly[(i + 1) % poly.size()]);
@@ -221,7 +220,11 @@ double Renderer::stroke_reach(const Shape& s, const Affine& m) {
 void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float opacity,
                      FillRule rule, Canvas& target) {
     const auto t = Clock::now();
-    const int x0 = target.origin_x(), x1 = x0 + target.width();
+    // Spans are cut to the target's columns (the edges are the frame's).
+    const auto fill_through = [&](SpanSink& painter) {
+        ColumnClipSink clipped(painter, target.origin_x(), target.origin_x() + target.width());
+        raster_.fill(edges_, rule, options_->antialias, clipped);
+    };
     if (gradient) {
         // Gradient space -> device: the shape's transform, then for
         // objectBoundingBox units the unit square onto the shape's box (an
@@ -236,15 +239,13 @@ void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float
         if (gradient_shader_.prepare(*gradient, to_device * gradient->transform, opacity,
                                      options_->linear_light_gradients)) {
             GradientSpanPainter painter(target, gradient_shader_);
-            ColumnClipSink clipped(painter, x0, x1);
-            raster_.fill(edges_, rule, options_->antialias, clipped);
+            fill_through(painter);
         }
     } else {
         const Premul c = premultiply(color, opacity);
         if (c.a > 0.0f) {
             SolidSpanPainter painter(target, c);
-            ColumnClipSink clipped(painter, x0, x1);
-            raster_.fill(edges_, rule, options_->antialias, clipped);
+            fill_through(painter);
         }
     }
     stats_.raster_ms += ms_since(t);

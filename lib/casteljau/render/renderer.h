@@ -70,14 +70,14 @@ class Renderer {
     static double stroke_reach(const Shape& s, const Affine& to_device);
 
   private:
+    void begin(const Affine& view, const RenderOptions& options, const PixelRect& frame);
     void draw_group(const Group& g, Canvas& target, int depth);
     void draw_node(const Node& n, Canvas& target, int depth);
     void draw_shape(const Shape& s, Canvas& target, float opacity);
     /// Draws into an offscreen layer over the node's bounds, composited with `opacity`.
     template <class Draw>
     void in_layer(const Node& n, Canvas& target, int depth, float opacity, Draw draw);
-    void draw_stroke(const Shape& s, const Affine& m, const PixelRect& clip, Canvas& target,
-                     float opacity);
+    void draw_stroke(const Shape& s, const Affine& m, Canvas& target, float opacity);
     /// Composites the current edge list with a solid color or a gradient.
     void paint(const Shape& s, Rgba color, const Gradient* gradient, float opacity, FillRule rule,
                Canvas& target);
