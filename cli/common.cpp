@@ -15,11 +15,13 @@ void add_tolerance_option(CLI::App* cmd, double& tolerance) {
 
 void add_flatten_options(CLI::App* cmd, FlattenOptions& o) {
     add_tolerance_option(cmd, o.tolerance);
-    const std::map<std::string, FlattenMethod> methods{{"adaptive", FlattenMethod::Adaptive},
+    const std::map<std::string, FlattenMethod> methods{{"guided", FlattenMethod::Guided},
+                                                       {"adaptive", FlattenMethod::Adaptive},
                                                        {"uniform", FlattenMethod::Uniform},
                                                        {"halving", FlattenMethod::Halving}};
     cmd->add_option("--flatten", o.method,
-                    "adaptive (default), uniform, or halving (textbook midpoint subdivision)")
+                    "guided (default: fastest), adaptive (fewest segments), uniform, or halving "
+                    "(textbook midpoint subdivision)")
         ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
     cmd->add_option(
            "--segments", o.segments,

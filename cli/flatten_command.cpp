@@ -1,4 +1,4 @@
-// `casteljau flatten --path DATA [--tolerance PX] [--flatten adaptive|uniform|halving]
+// `casteljau flatten --path DATA [--tolerance PX] [--flatten guided|adaptive|uniform|halving]
 //                    [--segments N] [--json]`
 // Flattens SVG path data (user units = device pixels) and reports the segment
 // count, the measured maximum error and the flattening time per curve.

@@ -43,7 +43,7 @@ void expect_valid(const C& c, FlattenMethod m, double tol, const std::string& wh
 }
 
 const FlattenMethod kMethods[] = {FlattenMethod::Adaptive, FlattenMethod::Halving,
-                                  FlattenMethod::Uniform};
+                                  FlattenMethod::Guided, FlattenMethod::Uniform};
 
 TEST(Flatten, ErrorWithinToleranceForThousandsOfRandomCurves) {
     testing::Rng rng(71);
@@ -90,12 +90,14 @@ TEST(Flatten, DepthCapHoldsWhenTheToleranceIsBelowRounding) {
     // At 1e15 px a double resolves ~0.1 px: a 1e-4 px tolerance is unreachable,
     // and the flatteners must stop at their caps instead of looping.
     const CubicBez c{{1e15, 1e15}, {1e15 + 4e14, 2e15}, {2e15, 0}, {3e15, 1e15}};
-    std::size_t adaptive = 0, halving = 0;
+    std::size_t adaptive = 0, halving = 0, guided = 0;
     flatten_adaptive(c, 1e-4, [&](const FlatVertex&) { ++adaptive; });
     flatten_halving(c, 1e-4, [&](const FlatVertex&) { ++halving; });
+    flatten_guided(c, 1e-4, [&](const FlatVertex&) { ++guided; });
     EXPECT_LE(adaptive, (std::size_t(1) << AdaptiveParams::kMaxDepth) + 1);
     EXPECT_GE(adaptive, 1u);
     EXPECT_LE(halving, std::size_t(1) << kHalvingMaxDepth);
+    EXPECT_LE(guided, std::size_t(1) << 24);
 }
 
 TEST(Flatten, RangeFormEqualsSinkForm) {
@@ -107,6 +109,10 @@ TEST(Flatten, RangeFormEqualsSinkForm) {
         flatten_adaptive(c, tol, [&](const FlatVertex& v) { sink.push_back(v); });
         for (const FlatVertex& v : AdaptiveFlattener<CubicBez>(c, tol)) range.push_back(v);
         EXPECT_EQ(sink, range) << i;
+        sink.clear(), range.clear();
+        flatten_guided(c, tol, [&](const FlatVertex& v) { sink.push_back(v); });
+        for (const FlatVertex& v : GuidedFlattener<CubicBez>(c, tol)) range.push_back(v);
+        EXPECT_EQ(sink, range) << "guided " << i;
     }
 }
 
@@ -160,24 +166,29 @@ TEST(Flatten, WangBoundMeetsToleranceAndBestUniformIsNoLarger) {
 TEST(Flatten, AdaptiveBeatsBestUniformAndIsNearOptimal) {
     const auto corpus = testing::cubic_corpus(2026, 40);
     for (double tol : {1.0, 0.5, 0.25, 0.1}) {
-        double adaptive = 0, uniform = 0, optimal = 0, halving = 0, max_err = 0;
+        double adaptive = 0, uniform = 0, optimal = 0, halving = 0, guided = 0, max_err = 0;
         for (const auto& [kind, c] : corpus) {
             const Result a = run(c, FlattenMethod::Adaptive, tol);
             adaptive += double(a.v.size());
             max_err = std::max(max_err, a.error);
             uniform += best_uniform_segments(c, tol, wang_segments(c, tol));
             halving += double(run(c, FlattenMethod::Halving, tol).v.size());
+            guided += double(run(c, FlattenMethod::Guided, tol).v.size());
             optimal += testing::optimal_segments(c, tol);
         }
         EXPECT_LT(adaptive, uniform) << "tol " << tol;
         EXPECT_LE(adaptive, 1.15 * optimal) << "tol " << tol;
+        // Guided trades segments for speed, but stays well under halving.
+        EXPECT_LE(guided, 1.5 * optimal) << "tol " << tol;
+        EXPECT_LT(guided, 0.85 * halving) << "tol " << tol;
         EXPECT_LE(max_err, tol + 1e-9);
         ::testing::Test::RecordProperty("tol_" + std::to_string(tol),
                                         std::to_string(adaptive / optimal));
         std::printf("tol %.2f: adaptive %.0f, best uniform %.0f, halving %.0f, optimal %.1f: "
-                    "adaptive/optimal %.3f, adaptive/uniform %.3f, halving/optimal %.3f\n",
+                    "adaptive/optimal %.3f, adaptive/uniform %.3f, halving/optimal %.3f, "
+                    "guided/optimal %.3f\n",
                     tol, adaptive, uniform, halving, optimal, adaptive / optimal,
-                    adaptive / uniform, halving / optimal);
+                    adaptive / uniform, halving / optimal, guided / optimal);
     }
 }
 

@@ -44,7 +44,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iterator>
 
 namespace casteljau {
 
@@ -70,7 +69,7 @@ struct AdaptiveParams {
 
 /// The adaptive flattener as a range of FlatVertex (see flatten_adaptive for the callback form).
 template <class Curve>
-class AdaptiveFlattener {
+class AdaptiveFlattener : public FlatVertexRange<AdaptiveFlattener<Curve>> {
   public:
     /// The flattener constants.
     using P = AdaptiveParams;
@@ -105,43 +104,6 @@ class AdaptiveFlattener {
         out = {rest_.start(), t0_};
         return true;
     }
-
-    /// Input-range form: `for (FlatVertex v : AdaptiveFlattener(c, tol))`.
-    class iterator {
-      public:
-        /// Input iterator tag: each vertex is produced once.
-        using iterator_category = std::input_iterator_tag;
-        /// Iterated values are vertices.
-        using value_type = FlatVertex;
-        /// Distance type (unused by an input iterator).
-        using difference_type = std::ptrdiff_t;
-        /// Pointer to a vertex.
-        using pointer = const FlatVertex*;
-        /// Reference to a vertex.
-        using reference = const FlatVertex&;
-        iterator() = default;
-        /// An iterator at the first vertex after the start.
-        explicit iterator(AdaptiveFlattener* f) : f_(f) { ++*this; }
-        /// The current vertex.
-        const FlatVertex& operator*() const { return v_; }
-        /// Advances to the next vertex.
-        iterator& operator++() {
-            if (!f_->next(v_)) f_ = nullptr;
-            return *this;
-        }
-        /// Advances to the next vertex (post-increment, returns nothing).
-        void operator++(int) { ++*this; }
-        /// Exact equality of every member.
-        bool operator==(const iterator& o) const { return f_ == o.f_; }
-
-      private:
-        AdaptiveFlattener* f_ = nullptr;
-        FlatVertex v_{};
-    };
-    /// The first vertex after the curve's start (the start itself is not emitted).
-    iterator begin() { return iterator(this); }
-    /// The end sentinel.
-    iterator end() { return iterator(); }
 
   private:
     struct Split {
@@ -201,9 +163,7 @@ class AdaptiveFlattener {
 /// Sink form: sink(FlatVertex) for every vertex after the start.
 template <class Curve, class Sink>
 void flatten_adaptive(const Curve& c, double tolerance, Sink&& sink) noexcept {
-    AdaptiveFlattener<Curve> f(c, tolerance);
-    FlatVertex v;
-    while (f.next(v)) sink(v);
+    drain_flattener(AdaptiveFlattener<Curve>(c, tolerance), sink);
 }
 
 } // namespace casteljau

@@ -4,6 +4,7 @@
 
 #include "casteljau/flatten/adaptive.h"
 #include "casteljau/flatten/error.h"
+#include "casteljau/flatten/guided.h"
 #include "casteljau/flatten/halving.h"
 #include "casteljau/flatten/uniform.h"
 
@@ -14,9 +15,10 @@
 namespace casteljau {
 
 enum class FlattenMethod {
-    Adaptive, ///< greedy flat prefixes (adaptive.h): the default
+    Adaptive, ///< greedy flat prefixes (adaptive.h): the fewest segments
     Uniform,  ///< N segments in advance (uniform.h)
     Halving,  ///< textbook midpoint subdivision (halving.h): a baseline
+    Guided,   ///< cut into the predicted number of pieces (guided.h): the default, fastest
     /// Uniform with, per curve, the smallest N whose measured error meets the
     /// tolerance (error.h): uniform sampling at its best, for comparisons at
     /// equal error. The first time a curve is seen it measures candidate N;
@@ -27,7 +29,7 @@ enum class FlattenMethod {
 /// How to flatten: the tolerance, the method, and a segment count for uniform sampling.
 struct FlattenOptions {
     double tolerance = 0.25; ///< device pixels; > 0
-    FlattenMethod method = FlattenMethod::Adaptive;
+    FlattenMethod method = FlattenMethod::Guided;
     int segments = 0; ///< Uniform only: N per curve; 0 = the smallest that Wang's bound allows
 };
 
@@ -79,6 +81,9 @@ void flatten_curve(const Curve& c, const FlattenOptions& o, Sink&& sink) {
         break;
     case FlattenMethod::Halving:
         flatten_halving(subdivision_form(c), o.tolerance, sink);
+        break;
+    case FlattenMethod::Guided:
+        flatten_guided(subdivision_form(c), o.tolerance, sink);
         break;
     case FlattenMethod::UniformBest:
         flatten_uniform(c, memoized_best_uniform(c, o.tolerance), sink);

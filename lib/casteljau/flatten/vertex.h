@@ -5,6 +5,9 @@
 
 #include "casteljau/geom/point.h"
 
+#include <cstddef>
+#include <iterator>
+
 namespace casteljau {
 
 /// A vertex of a flattened curve and the curve parameter it lies at.
@@ -13,6 +16,60 @@ struct FlatVertex {
     double t = 0;
     /// Exact equality of every member.
     constexpr bool operator==(const FlatVertex&) const = default;
+};
+
+/// The range form of a flattener F with `bool next(FlatVertex&)`:
+/// `for (FlatVertex v : F(curve, tol))` visits what the sink form emits.
+template <class F>
+class FlatVertexIterator {
+  public:
+    /// Input iterator tag: each vertex is produced once.
+    using iterator_category = std::input_iterator_tag;
+    /// Iterated values are vertices.
+    using value_type = FlatVertex;
+    /// Distance type (unused by an input iterator).
+    using difference_type = std::ptrdiff_t;
+    /// Pointer to a vertex.
+    using pointer = const FlatVertex*;
+    /// Reference to a vertex.
+    using reference = const FlatVertex&;
+    FlatVertexIterator() = default;
+    /// An iterator at the first vertex after the start.
+    explicit FlatVertexIterator(F* f) : f_(f) { ++*this; }
+    /// The current vertex.
+    const FlatVertex& operator*() const { return v_; }
+    /// Advances to the next vertex.
+    FlatVertexIterator& operator++() {
+        if (!f_->next(v_)) f_ = nullptr;
+        return *this;
+    }
+    /// Advances to the next vertex (post-increment, returns nothing).
+    void operator++(int) { ++*this; }
+    /// Exact equality of every member.
+    bool operator==(const FlatVertexIterator& o) const { return f_ == o.f_; }
+
+  private:
+    F* f_ = nullptr;
+    FlatVertex v_{};
+};
+
+/// The sink form of a flattener: sink(FlatVertex) for every vertex it yields.
+template <class F, class Sink>
+void drain_flattener(F&& flattener, Sink&& sink) noexcept {
+    FlatVertex v;
+    while (flattener.next(v)) sink(v);
+}
+
+/// Gives a flattener F (with `bool next(FlatVertex&)`) its range form:
+/// `class F : public FlatVertexRange<F>`.
+template <class F>
+struct FlatVertexRange {
+    /// The input iterator over F's vertices.
+    using iterator = FlatVertexIterator<F>;
+    /// The first vertex after the curve's start (the start itself is not emitted).
+    iterator begin() { return iterator(static_cast<F*>(this)); }
+    /// The end sentinel.
+    iterator end() { return iterator(); }
 };
 
 } // namespace casteljau
