@@ -86,6 +86,47 @@ TEST(Sweep, FillRules) {
     EXPECT_FLOAT_EQ(apply_fill_rule(3.0f, FillRule::EvenOdd), 1.0f);
 }
 
+// The inside of a wide shape reaches the compositor as one solid span; the
+// partly covered ends as per-pixel spans; no span is empty or overlaps.
+TEST(Sweep, WideInsidesLeaveAsOneSolidSpan) {
+    struct Record final : SpanSink {
+        std::vector<Span> spans;
+        std::vector<float> values; // coverage of every pixel, in order
+        void span(const Span& s) override {
+            spans.push_back(s);
+            for (int i = 0; i < s.len; ++i) values.push_back(s.at(i));
+        }
+    } sink;
+    CoverageRow row;
+    row.reset(300);
+    // A band from x = 3.5 to 200.25 over the whole row height, and a thin
+    // sliver from x = 250 to 256 (short: per-pixel).
+    row.add_segment(3.5f, 0, 3.5f, 1, -1.0f);
+    row.add_segment(200.25f, 0, 200.25f, 1, 1.0f);
+    row.add_segment(250.0f, 0, 250.0f, 1, -1.0f);
+    row.add_segment(256.0f, 0, 256.0f, 1, 1.0f);
+    std::vector<float> scratch;
+    sweep_row(row, 7, 10, FillRule::NonZero, scratch, sink);
+    ASSERT_EQ(sink.spans.size(), 4u);
+    EXPECT_EQ(sink.spans[0].x, 13);
+    EXPECT_EQ(sink.spans[0].len, 1);
+    EXPECT_FLOAT_EQ(sink.spans[0].coverage[0], 0.5f);
+    EXPECT_EQ(sink.spans[1].coverage, nullptr);
+    EXPECT_EQ(sink.spans[1].x, 14);
+    EXPECT_EQ(sink.spans[1].len, 196);
+    EXPECT_EQ(sink.spans[1].solid, 1.0f);
+    EXPECT_EQ(sink.spans[2].x, 210);
+    EXPECT_FLOAT_EQ(sink.spans[2].coverage[0], 0.25f);
+    EXPECT_EQ(sink.spans[3].x, 260);
+    EXPECT_EQ(sink.spans[3].len, 6);
+    EXPECT_NE(sink.spans[3].coverage, nullptr);
+    for (const Span& s : sink.spans) EXPECT_EQ(s.y, 7);
+    float total = 0;
+    for (float v : sink.values) total += v;
+    EXPECT_NEAR(total, 200.25f - 3.5f + 6.0f, 1e-4f);
+    for (int i = 0; i < 302; ++i) EXPECT_EQ(row.data()[i], 0.0f) << "row left dirty at " << i;
+}
+
 TEST(EdgeList, ClipsToTheCanvasKeepingWindingAtTheLeftBorder) {
     EdgeList e;
     e.reset(10, 10);

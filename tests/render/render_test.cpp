@@ -14,7 +14,7 @@ TEST(Canvas, SourceOverWithCoverage) {
     Canvas c(4, 1);
     c.fill({0, 0, 1, 1}); // opaque blue
     const float cov[2] = {1.0f, 0.5f};
-    c.composite_span({0, 1, 2, cov}, premultiply({1, 0, 0, 1}, 0.5f)); // half-transparent red
+    c.composite_span({0, 1, 2, cov, 0}, premultiply({1, 0, 0, 1}, 0.5f)); // half-transparent red
     // Full coverage: 0.5 red over blue = (0.5, 0, 0.5, 1).
     EXPECT_FLOAT_EQ(c.row(0)[1].r, 0.5f);
     EXPECT_FLOAT_EQ(c.row(0)[1].b, 0.5f);

@@ -51,7 +51,7 @@ void CoverageImage::span(const Span& s) {
     last_y_ = s.y;
     last_end_ = s.x + s.len;
     for (int i = 0; i < s.len; ++i) {
-        const float c = s.coverage[i];
+        const float c = s.at(i);
         if (!(c >= 0.0f && c <= 1.0f)) order_ok_ = false;
         if (s.x + i >= 0 && s.x + i < w_ && s.y >= 0 && s.y < h_)
             cov_[std::size_t(s.y * w_ + s.x + i)] = c;

@@ -26,6 +26,13 @@ void Canvas::fill(Premul color) {
 void Canvas::composite_span(const Span& s, Premul c) {
     Premul* d = row(s.y) + s.x;
     const float* k = s.coverage;
+    if (!k) { // one coverage for the whole span
+        if (c.a == 1.0f && s.solid == 1.0f)
+            std::fill(d, d + s.len, c);
+        else
+            for (int i = 0; i < s.len; ++i) blend_over(d[i], c, s.solid);
+        return;
+    }
     if (c.a < 1.0f) {
         for (int i = 0; i < s.len; ++i) blend_over(d[i], c, k[i]);
         return;

@@ -79,7 +79,8 @@ class SolidSpanPainter final : public SpanSink {
     /// Source-over of the color through the span's coverage.
     void span(const Span& s) override {
         canvas_.composite_span(
-            {s.y - canvas_.origin_y(), s.x - canvas_.origin_x(), s.len, s.coverage}, color_);
+            {s.y - canvas_.origin_y(), s.x - canvas_.origin_x(), s.len, s.coverage, s.solid},
+            color_);
     }
 
   private:
@@ -96,7 +97,7 @@ class GradientSpanPainter final : public SpanSink {
     /// Source-over of the shaded pixels through the span's coverage.
     void span(const Span& s) override {
         Premul* d = canvas_.row(s.y - canvas_.origin_y()) + (s.x - canvas_.origin_x());
-        for (int i = 0; i < s.len; ++i) blend_over(d[i], shader_.at(s.x + i, s.y), s.coverage[i]);
+        for (int i = 0; i < s.len; ++i) blend_over(d[i], shader_.at(s.x + i, s.y), s.at(i));
     }
 
   private:

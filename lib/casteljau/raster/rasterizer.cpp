@@ -65,8 +65,6 @@ void Rasterizer::row_aliased(int y, FillRule rule, SpanSink& sink) {
         if (a.y0 <= yc && yc < a.y1) crossings_.push_back({a.x0 + (yc - a.y0) * a.dxdy, a.dir});
     std::sort(crossings_.begin(), crossings_.end(),
               [](const Crossing& a, const Crossing& b) { return a.x < b.x; });
-    if (coverage_.size() < std::size_t(width_)) coverage_.resize(std::size_t(width_));
-    std::fill(coverage_.begin(), coverage_.begin() + width_, 1.0f);
     float winding = 0;
     for (std::size_t i = 0; i < crossings_.size(); ++i) {
         winding += crossings_[i].dir;
@@ -76,7 +74,7 @@ void Rasterizer::row_aliased(int y, FillRule rule, SpanSink& sink) {
         const float next = i + 1 < crossings_.size() ? crossings_[i + 1].x : float(width_) + 1.0f;
         const int x0 = std::max(0, int(std::ceil(crossings_[i].x - 0.5f)));
         const int x1 = std::min(width_, int(std::ceil(next - 0.5f)));
-        if (x1 > x0) sink.span({y, x0_ + x0, x1 - x0, coverage_.data() + x0});
+        if (x1 > x0) sink.span({y, x0_ + x0, x1 - x0, nullptr, 1.0f});
     }
 }
 

@@ -2,17 +2,24 @@
 //
 // A Span is a run of `len` pixels on row `y` starting at column `x`, with one
 // coverage value in [0, 1] per pixel (the fraction of the pixel's area inside
-// the shape under the fill rule). Spans of one sweep arrive in increasing y,
-// and within a row in increasing x without overlap; pixels not covered by any
-// span have coverage 0. `coverage` is valid only during the call.
+// the shape under the fill rule), or, when `coverage` is null, the coverage
+// `solid` for all of them: the inside of a shape, where the coverage is
+// constant, reaches the compositor as one number, so wide fills cost a store
+// per pixel and no coverage array. Spans of one sweep arrive in increasing y,
+// and within a row in increasing x without overlap (adjacent spans may touch);
+// pixels not covered by any span have coverage 0. `coverage` is valid only
+// during the call.
 #pragma once
 
 namespace casteljau {
 
-/// A run of pixels of one row, with one coverage value per pixel.
+/// A run of pixels of one row, with one coverage value per pixel or one for all.
 struct Span {
     int y = 0, x = 0, len = 0;
-    const float* coverage = nullptr;
+    const float* coverage = nullptr; ///< per pixel; null: every pixel has `solid`
+    float solid = 0;                 ///< the coverage of every pixel when `coverage` is null
+    /// The coverage of the i-th pixel.
+    float at(int i) const { return coverage ? coverage[i] : solid; }
 };
 
 /// Receives spans: the one interface between rasterizer and compositor.
@@ -36,7 +43,8 @@ class ColumnClipSink final : public SpanSink {
     void span(const Span& s) override {
         const int a = s.x > x0_ ? s.x : x0_;
         const int b = s.x + s.len < x1_ ? s.x + s.len : x1_;
-        if (a < b) inner_.span({s.y, a, b - a, s.coverage + (a - s.x)});
+        if (a < b)
+            inner_.span({s.y, a, b - a, s.coverage ? s.coverage + (a - s.x) : nullptr, s.solid});
     }
 
   private:

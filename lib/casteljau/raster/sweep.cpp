@@ -6,15 +6,55 @@
 namespace casteljau {
 
 namespace {
+
 // Coverage below this is invisible in any 8-bit or half-float output; runs of
 // it (the inside of holes, where float sums cancel to ~1e-7) are not emitted.
 constexpr float kInvisible = 1e-6f;
+
+// A run of constant coverage at least this long leaves as a span of its own
+// with one coverage value; shorter runs join the per-pixel span around them,
+// where writing a few coverage values costs less than an extra span call.
+constexpr int kSolidRun = 16;
+
+// Turns one row's runs of constant coverage, left to right, into spans.
+class RowSpans {
+  public:
+    RowSpans(SpanSink& sink, float* cov, int y, int x_offset)
+        : sink_(sink), cov_(cov), y_(y), x_offset_(x_offset) {}
+
+    // Columns [i, j) have coverage c; i is the end of the previous run.
+    void run(int i, int j, float c) {
+        if (c < kInvisible) {
+            flush();
+        } else if (j - i >= kSolidRun) {
+            flush();
+            sink_.span({y_, x_offset_ + i, j - i, nullptr, c});
+        } else {
+            if (start_ < 0) start_ = i;
+            std::fill(cov_ + i, cov_ + j, c);
+            end_ = j;
+        }
+    }
+
+    // Emits the per-pixel span in progress, if any.
+    void flush() {
+        if (start_ >= 0) sink_.span({y_, x_offset_ + start_, end_ - start_, cov_ + start_, 0.0f});
+        start_ = -1;
+    }
+
+  private:
+    SpanSink& sink_;
+    float* cov_;
+    int y_, x_offset_;
+    int start_ = -1, end_ = 0; // the per-pixel span in progress: columns [start_, end_)
+};
+
 } // namespace
 
 void sweep_row(CoverageRow& row, int y, int x_offset, FillRule rule, std::vector<float>& scratch,
                SpanSink& sink) {
     const int begin = row.begin();
-    int end = std::min(row.end(), row.width());
+    const int end = std::min(row.end(), row.width());
     if (begin >= end) {
         if (row.begin() < row.end())
             std::fill(row.data() + row.begin(), row.data() + row.end(), 0.0f);
@@ -23,22 +63,20 @@ void sweep_row(CoverageRow& row, int y, int x_offset, FillRule rule, std::vector
     }
     if (scratch.size() < std::size_t(row.width())) scratch.resize(std::size_t(row.width()));
     float* acc = row.data();
-    float* cov = scratch.data();
+    RowSpans spans(sink, scratch.data(), y, x_offset);
     // The running sum changes only where an edge deposited something; between
-    // those columns the coverage is constant, so runs of zeros are filled.
+    // those columns the coverage is constant: one run.
     float s = 0;
     for (int i = begin; i < end;) {
         s += acc[i];
         acc[i] = 0;
-        const float c = apply_fill_rule(s, rule);
-        cov[i++] = c;
-        int j = i;
+        int j = i + 1;
         // Four columns per test: one branch per four, not one per column.
         while (j + 4 <= end && ((acc[j] == 0.0f) & (acc[j + 1] == 0.0f) & (acc[j + 2] == 0.0f) &
                                 (acc[j + 3] == 0.0f)))
             j += 4;
         while (j < end && acc[j] == 0.0f) ++j;
-        std::fill(cov + i, cov + j, c);
+        spans.run(i, j, apply_fill_rule(s, rule));
         i = j;
     }
     std::fill(acc + end, acc + row.end(), 0.0f);
@@ -47,18 +85,8 @@ void sweep_row(CoverageRow& row, int y, int x_offset, FillRule rule, std::vector
     // remain (they are vertical there), so the winding is a whole number; the
     // sum carries float residue (~1e-7 per edge), which must not paint the
     // rest of the row faintly. Rounded, it is the winding of the rest.
-    const float rest = apply_fill_rule(std::nearbyint(s), rule);
-    if (rest > 0.0f) {
-        std::fill(cov + end, cov + row.width(), rest);
-        end = row.width();
-    }
-    int i = begin;
-    while (i < end) {
-        while (i < end && cov[i] < kInvisible) ++i;
-        const int start = i;
-        while (i < end && cov[i] >= kInvisible) ++i;
-        if (i > start) sink.span({y, x_offset + start, i - start, cov + start});
-    }
+    if (end < row.width()) spans.run(end, row.width(), apply_fill_rule(std::nearbyint(s), rule));
+    spans.flush();
 }
 
 } // namespace casteljau
