@@ -37,9 +37,15 @@ class Canvas {
     /// Resizes (keeping storage when large enough) and clears to `clear`.
     void reset(int width, int height, int ox = 0, int oy = 0, Premul clear = {});
     /// Makes this canvas a view of `rows` whole rows of `parent` from row y0
-    /// (its own storage is kept, unused), cleared to `clear`: a band drawn in
-    /// place, with no copy. Valid while the parent keeps its size.
+    /// (its own storage is kept, unused): a band drawn in place, with no copy.
+    /// Valid while the parent keeps its size. The rows are cleared to `clear`
+    /// lazily: each when it is first written (row() or composite_span), so
+    /// the clear and the drawing meet in the cache, and a row whose first
+    /// write is an opaque run is cleared only around it. settle() clears the
+    /// rows never written; call it before reading the pixels.
     void view_rows(Canvas& parent, int y0, int rows, Premul clear);
+    /// Clears the rows of a view_rows band that nothing has written yet.
+    void settle();
 
     /// Width in pixels.
     int width() const { return w_; }
@@ -49,8 +55,8 @@ class Canvas {
     int origin_x() const { return ox_; }
     /// Row of the parent (or frame) where this canvas starts.
     int origin_y() const { return oy_; }
-    /// The pixels of row y (0 <= y < height()).
-    Premul* row(int y) { return pixels() + std::size_t(y) * std::size_t(w_); }
+    /// The pixels of row y (0 <= y < height()), for writing.
+    Premul* row(int y) { return row_except(y, 0, 0); }
     /// The pixels of row y (0 <= y < height()), read-only.
     const Premul* row(int y) const { return pixels() + std::size_t(y) * std::size_t(w_); }
 
@@ -63,10 +69,20 @@ class Canvas {
     void composite_layer(const Canvas& layer, float opacity);
 
   private:
+    /// Row y for writing; a row still awaiting its clear is cleared first,
+    /// except for the columns [x0, x1), which the caller overwrites.
+    Premul* row_except(int y, int x0, int x1) {
+        Premul* r = pixels() + std::size_t(y) * std::size_t(w_);
+        if (!stale_.empty() && stale_[std::size_t(y)]) clear_row_except(r, y, x0, x1);
+        return r;
+    }
+    void clear_row_except(Premul* r, int y, int x0, int x1);
     Premul* pixels() { return view_ ? view_ : px_.data(); }
     const Premul* pixels() const { return view_ ? view_ : px_.data(); }
     std::vector<Premul> px_;
-    Premul* view_ = nullptr; // another canvas's rows (view_rows), else null
+    Premul* view_ = nullptr;           // another canvas's rows (view_rows), else null
+    std::vector<unsigned char> stale_; // view_rows: per row, 1 until cleared or written
+    Premul clear_{};                   // what stale rows are cleared to
     int w_ = 0, h_ = 0, ox_ = 0, oy_ = 0;
 };
 

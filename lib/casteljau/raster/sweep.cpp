@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace casteljau {
 
@@ -15,6 +17,22 @@ constexpr float kInvisible = 1e-6f;
 // with one coverage value; shorter runs join the per-pixel span around them,
 // where writing a few coverage values costs less than an extra span call.
 constexpr int kSolidRun = 16;
+
+// The first column in [j, end) where an edge deposited something. Eight
+// columns per test: a cell no edge touched is +0.0f, all bits zero (a sum
+// that cancels to zero is +0.0f too), so one OR of four 64-bit words tests
+// eight cells. A -0.0f cell only ends the wide steps early; the exact test
+// after them skips it.
+int next_touched(const float* acc, int j, int end) {
+    while (j + 8 <= end) {
+        std::uint64_t w[4];
+        std::memcpy(w, acc + j, sizeof w);
+        if ((w[0] | w[1] | w[2] | w[3]) != 0) break;
+        j += 8;
+    }
+    while (j < end && acc[j] == 0.0f) ++j;
+    return j;
+}
 
 // Turns one row's runs of constant coverage, left to right, into spans.
 class RowSpans {
@@ -70,12 +88,7 @@ void sweep_row(CoverageRow& row, int y, int x_offset, FillRule rule, std::vector
     for (int i = begin; i < end;) {
         s += acc[i];
         acc[i] = 0;
-        int j = i + 1;
-        // Four columns per test: one branch per four, not one per column.
-        while (j + 4 <= end && ((acc[j] == 0.0f) & (acc[j + 1] == 0.0f) & (acc[j + 2] == 0.0f) &
-                                (acc[j + 3] == 0.0f)))
-            j += 4;
-        while (j < end && acc[j] == 0.0f) ++j;
+        const int j = next_touched(acc, i + 1, end);
         spans.run(i, j, apply_fill_rule(s, rule));
         i = j;
     }

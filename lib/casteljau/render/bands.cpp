@@ -28,6 +28,7 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
             const int y0 = b * kBandRows, y1 = std::min(h, y0 + kBandRows);
             band.view_rows(canvas, y0, y1 - y0, background);
             total += renderers_[std::size_t(t)]->render(scene, view, band, options, frame);
+            band.settle();
         }
     };
     if (n == 1) {

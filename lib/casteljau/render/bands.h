@@ -3,7 +3,9 @@
 // The frame is cut into bands of kBandRows rows, which the threads take one
 // at a time as they finish the last. A thread renders the whole scene into
 // each of its bands with its own Renderer, in place (the band canvas is a
-// view of the frame's rows, Canvas::view_rows). Bands pay even on one
+// view of the frame's rows, Canvas::view_rows, whose rows are cleared to the
+// background as they are first written, and settled when the band is done).
+// Bands pay even on one
 // thread: a band (kBandRows x width x 16 bytes) stays in cache while every
 // shape crossing it is composited, where a whole float frame would not
 // (measured in bench/render). Edge geometry is always clipped to the frame,
