@@ -4,8 +4,8 @@
 // Offsets. The outline's sides are the offset curves O(t) = P(t) +- h n(t),
 // h = width / 2, n the unit normal, sampled at parameters chosen so that, per
 // chord of the samples,
-//   (a) the base curve is within tol/2 of its chord (the adaptive flattener's
-//       exact test, flatness.h), and
+//   (a) the base curve is within tol/2 of its chord (the guided flattener's
+//       test, flatten/guided.h), and
 //   (b) the normal turns by at most dphi = 2 acos(1 - tol / (2h)),
 // whence the offset curve stays within tol/2 + h (1 - cos(dphi/2)) <= tol of
 // the offset chord: the offset of a point is the base point moved by h along
