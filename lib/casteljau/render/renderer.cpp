@@ -168,12 +168,11 @@ void Renderer::draw_stroke(const Shape& s, const Affine& m, Canvas& target, floa
     const double device_width = st.geometry.width * scale;
     if (!(device_width > 0) || !(scale > 0)) return;
     const StrokeGeometry* geometry = &st.geometry;
-    StrokeGeometry hairline_geometry; // copied only for hairlines
     float hairline = 1.0f;
     if (device_width < 1.0) {
-        hairline_geometry = st.geometry;
-        hairline_geometry.width = st.geometry.width / device_width;
-        geometry = &hairline_geometry;
+        hairline_geometry_ = st.geometry; // into the member: its dash storage is reused
+        hairline_geometry_.width = st.geometry.width / device_width;
+        geometry = &hairline_geometry_;
         hairline = float(device_width);
     }
     // The outline is built only near the pixels it is drawn on, and its
@@ -188,14 +187,14 @@ void Renderer::draw_stroke(const Shape& s, const Affine& m, Canvas& target, floa
         const int strip = frame_.y0 + (y0 - frame_.y0) / kStrokeStripRows * kStrokeStripRows;
         const int y1 = std::min(bottom, strip + kStrokeStripRows);
         const auto t = Clock::now();
-        polygons_.clear();
         const Rect pixels{double(frame_.x0 - 1), double(strip - 1), double(frame_.x1 + 1),
                           double(std::min(frame_.y1, strip + kStrokeStripRows) + 1)};
         // The device tolerance in user units: divided by the largest stretch.
-        stroke_outline(s.path, *geometry, options_->flatten.tolerance / m.max_scale(), polygons_,
-                       device_box(pixels, m.inverse()));
+        const std::span<const Polygon> outline =
+            stroker_.outline(s.path, *geometry, options_->flatten.tolerance / m.max_scale(),
+                             device_box(pixels, m.inverse()));
         edges_.reset(frame_, y0, y1);
-        for (const Polygon& poly : polygons_) {
+        for (const Polygon& poly : outline) {
             for (std::size_t i = 0; i < poly.size(); ++i)
                 edges_.add_line(m * poly[i], m * poly[(i + 1) % poly.size()]);
             stats_.flatten.segments_out += poly.size();

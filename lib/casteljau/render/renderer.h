@@ -86,7 +86,8 @@ class Renderer {
     EdgeList edges_;
     Rasterizer raster_;
     GradientShader gradient_shader_;              ///< its color table is reused across shapes
-    std::vector<Polygon> polygons_;               ///< stroke outlines, reused across shapes
+    Stroker stroker_;                             ///< stroke outlines, buffers reused across shapes
+    StrokeGeometry hairline_geometry_;            ///< a hairline's widened copy of its geometry
     std::vector<std::unique_ptr<Canvas>> layers_; ///< one per group nesting depth
     Affine view_;
     PixelRect frame_;

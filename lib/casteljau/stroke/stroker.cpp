@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 namespace casteljau {
@@ -58,7 +59,8 @@ double max_normal_turn(double h, double tol) {
 
 class Sampler {
   public:
-    Sampler(double h, double tol) : tol_(tol), cos_dphi_(std::cos(max_normal_turn(h, tol))) {}
+    Sampler(double h, double tol, std::vector<double>& ts)
+        : tol_(tol), cos_dphi_(std::cos(max_normal_turn(h, tol))), ts_(ts) {}
 
     // Samples of one segment, t = 0 first.
     void run(const Segment& s, std::vector<Sample>& out) {
@@ -110,14 +112,84 @@ class Sampler {
     }
 
     double tol_, cos_dphi_;
-    std::vector<double> ts_;
+    std::vector<double>& ts_; // the flattener's parameters, a buffer kept between strokes
 };
+
+// The subpaths to outline (the visible part of a path, or its dashes), with
+// the Path building calls they are made by, in flat buffers that keep their
+// capacity from stroke to stroke.
+struct Pieces {
+    struct Run {
+        Point start;
+        std::size_t begin, end; // segments[begin, end)
+        bool closed;
+    };
+    std::vector<Segment> segments;
+    std::vector<Run> runs;
+    bool open = false;
+
+    void clear() { segments.clear(), runs.clear(), open = false; }
+    void move_to(Point p) {
+        runs.push_back({p, segments.size(), segments.size(), false});
+        open = true;
+    }
+    void append(const Segment& s) {
+        if (!open) move_to(segment_start(s));
+        segments.push_back(s);
+        runs.back().end = segments.size();
+    }
+    // As Path::close: the closing line where the subpath ends elsewhere.
+    void close() {
+        if (!open) return;
+        open = false;
+        Run& r = runs.back();
+        if (r.begin == r.end) return;
+        if (const Point end = segment_end(segments.back()); end != r.start)
+            append(Line{{end, r.start}});
+        r.closed = true;
+    }
+    void add(const Subpath& sp) {
+        move_to(sp.start);
+        for (const Segment& s : sp.segments) append(s);
+        if (sp.closed) close();
+        open = false;
+    }
+    std::span<const Segment> segments_of(const Run& r) const {
+        return std::span<const Segment>(segments).subspan(r.begin, r.end - r.begin);
+    }
+};
+
+} // namespace
+
+// Everything a stroke is built in, kept between strokes: once the buffers
+// have grown, outlining allocates nothing.
+struct Stroker::Buffers {
+    Pieces pieces;
+    std::vector<const Segment*> segs;
+    std::vector<double> ts;
+    std::vector<Sample> samples;
+    std::vector<Point> right;
+    std::vector<FlatVertex> dash_vertices;
+    std::vector<double> dash_pattern;
+    std::vector<Polygon> polygons; // [0, count) are the last outline's
+    std::size_t count = 0;
+
+    // A cleared polygon for the outline, reusing an old one's storage.
+    // Invalidates references to earlier ones.
+    std::size_t new_polygon() {
+        if (count == polygons.size()) polygons.emplace_back();
+        polygons[count].clear();
+        return count++;
+    }
+};
+
+namespace {
 
 // One side of the outline, or a cap or join, is built on a point list.
 class Outline {
   public:
-    Outline(double h, double tol, const StrokeGeometry& st)
-        : h_(h), dphi_(max_normal_turn(h, tol)), st_(st), sampler_(h, tol) {}
+    Outline(double h, double tol, const StrokeGeometry& st, Stroker::Buffers& b)
+        : h_(h), dphi_(max_normal_turn(h, tol)), st_(st), b_(b), sampler_(h, tol, b.ts) {}
 
     // Arc of radius h around c from direction u0 to u1, turning `sweep` radians
     // (signed), endpoints excluded.
@@ -162,65 +234,71 @@ class Outline {
         }
     }
 
-    void zero_length(std::vector<Polygon>& out, Point p) const {
+    void zero_length(Point p) const {
         if (st_.cap == LineCap::Round) {
-            Polygon disc{p + Vec2{h_, 0}};
+            Polygon& disc = b_.polygons[b_.new_polygon()];
+            disc.push_back(p + Vec2{h_, 0});
             arc(disc, p, {1, 0}, 2 * kPi);
-            out.push_back(std::move(disc));
         } else if (st_.cap == LineCap::Square) {
-            out.push_back(
-                {p + Vec2{-h_, -h_}, p + Vec2{h_, -h_}, p + Vec2{h_, h_}, p + Vec2{-h_, h_}});
+            Polygon& square = b_.polygons[b_.new_polygon()];
+            for (const Vec2 v : {Vec2{-h_, -h_}, Vec2{h_, -h_}, Vec2{h_, h_}, Vec2{-h_, h_}})
+                square.push_back(p + v);
         }
     }
 
-    void subpath(const Subpath& sp, std::vector<Polygon>& out) {
-        std::vector<const Segment*> segs;
-        for (const Segment& s : sp.segments)
+    void subpath(Point start, std::span<const Segment> segments, bool closed) {
+        std::vector<const Segment*>& segs = b_.segs;
+        segs.clear();
+        for (const Segment& s : segments)
             if (!degenerate(s)) segs.push_back(&s);
-        if (segs.empty()) return zero_length(out, sp.start);
-        std::vector<Point> left, right;
+        if (segs.empty()) return zero_length(start);
+        // Both sides' polygons are taken before either is referenced: taking
+        // one may move the others.
+        const std::size_t left_at = b_.new_polygon();
+        const std::size_t right_at = closed ? b_.new_polygon() : left_at;
+        std::vector<Point>& left = b_.polygons[left_at];
+        std::vector<Point>& right = closed ? b_.polygons[right_at] : b_.right;
+        right.clear();
+        std::vector<Sample>& samples = b_.samples;
         Vec2 first_d{}, last_d{};
         Point last_p{};
         for (std::size_t i = 0; i < segs.size(); ++i) {
-            samples_.clear();
-            sampler_.run(*segs[i], samples_);
+            samples.clear();
+            sampler_.run(*segs[i], samples);
             if (i == 0) {
-                first_d = samples_[0].d;
+                first_d = samples[0].d;
             } else {
-                join(left, samples_[0].p, last_d, samples_[0].d, +1, st_.join);
-                join(right, samples_[0].p, last_d, samples_[0].d, -1, st_.join);
+                join(left, samples[0].p, last_d, samples[0].d, +1, st_.join);
+                join(right, samples[0].p, last_d, samples[0].d, -1, st_.join);
             }
-            for (std::size_t k = 0; k < samples_.size(); ++k) {
-                const Sample& s = samples_[k];
+            for (std::size_t k = 0; k < samples.size(); ++k) {
+                const Sample& s = samples[k];
                 if (s.cusp_before && k > 0) { // a cusp inside the curve: round it
-                    join(left, s.p, samples_[k - 1].d, s.d, +1, LineJoin::Round);
-                    join(right, s.p, samples_[k - 1].d, s.d, -1, LineJoin::Round);
+                    join(left, s.p, samples[k - 1].d, s.d, +1, LineJoin::Round);
+                    join(right, s.p, samples[k - 1].d, s.d, -1, LineJoin::Round);
                 }
                 left.push_back(s.p + s.d.perp() * h_);
                 right.push_back(s.p - s.d.perp() * h_);
             }
-            last_d = samples_.back().d;
-            last_p = samples_.back().p;
+            last_d = samples.back().d;
+            last_p = samples.back().p;
         }
-        if (sp.closed) {
+        if (closed) {
             join(left, last_p, last_d, first_d, +1, st_.join);
             join(right, last_p, last_d, first_d, -1, st_.join);
-            out.push_back(std::move(left));
             std::reverse(right.begin(), right.end());
-            out.push_back(std::move(right));
             return;
         }
         cap(left, last_p, last_d);
         left.insert(left.end(), right.rbegin(), right.rend());
-        cap(left, sp.start, -first_d);
-        out.push_back(std::move(left));
+        cap(left, start, -first_d);
     }
 
   private:
     double h_, dphi_;
     const StrokeGeometry& st_;
+    Stroker::Buffers& b_;
     Sampler sampler_; // one per stroke: its buffers serve every segment
-    std::vector<Sample> samples_;
 };
 
 // Dash boundaries walked per path (stroker.h): beyond, dashes are not drawn.
@@ -264,17 +342,22 @@ struct DashCursor {
     }
 };
 
-// Splits the path into dashes (open subpaths) along its arc length; dashes
-// that lie outside `keep` are not emitted.
-Path dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& keep) {
-    std::vector<double> pattern = st.dashes;
+// Splits the path into dashes (open subpaths) along its arc length, into
+// `out`; dashes that lie outside `keep` are not emitted.
+void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& keep,
+            Stroker::Buffers& b) {
+    std::vector<double>& pattern = b.dash_pattern;
+    pattern.assign(st.dashes.begin(), st.dashes.end());
     if (pattern.size() % 2) pattern.insert(pattern.end(), st.dashes.begin(), st.dashes.end());
     double period = 0;
     for (double d : pattern) period += d;
-    if (!(period > 0)) return path; // all zero: solid (SVG 1.1, 11.4)
-    Path out;
+    Pieces& out = b.pieces;
+    if (!(period > 0)) { // all zero: solid (SVG 1.1, 11.4)
+        for (const Subpath& sp : path.subpaths()) out.add(sp);
+        return;
+    }
     std::size_t walked = 0;
-    std::vector<FlatVertex> v;
+    std::vector<FlatVertex>& v = b.dash_vertices;
     for (const Subpath& sp : path.subpaths()) {
         DashCursor dash(pattern, period, st.dash_offset);
         bool open = false; // the last emitted dash continues into this piece
@@ -335,11 +418,10 @@ Path dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
                 dash.remaining -= s1 - pos;
                 if (s1 < len) pass(t_at(s1), len - s1, v[i].t);
             }
-            if (walked >= kMaxDashes) return out; // the rest is not drawn
+            if (walked >= kMaxDashes) return; // the rest is not drawn
             if (dash.in_dash() && t_from < 1) emit(seg, t_from, 1.0);
         }
     }
-    return out;
 }
 
 // The parts of `path` within `keep`, as open or closed subpaths: a segment
@@ -350,9 +432,8 @@ Path dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
 // as its chord, clipped. So strokes of curves reaching 1e308 cost what their
 // visible part costs, and the outline never measures a length beyond it
 // (whose square would overflow).
-Path visible_part(const Path& path, const Rect& keep) {
+void visible_part(const Path& path, const Rect& keep, Pieces& out) {
     const double small = 4 * std::max(keep.width(), keep.height());
-    Path out;
     for (const Subpath& sp : path.subpaths()) {
         bool open = false, cut = false;
         const auto keep_piece = [&](const Segment& piece) {
@@ -396,32 +477,51 @@ Path visible_part(const Path& path, const Rect& keep) {
                 seg);
         }
         if (sp.closed && !cut) out.close();
+        out.open = false;
     }
-    return out;
 }
 
 } // namespace
 
-void stroke_outline(const Path& path, const StrokeGeometry& style, double tolerance,
-                    std::vector<Polygon>& out, const Rect& visible) {
+Stroker::Stroker() : b_(std::make_unique<Buffers>()) {}
+Stroker::~Stroker() = default;
+Stroker::Stroker(Stroker&&) noexcept = default;
+Stroker& Stroker::operator=(Stroker&&) noexcept = default;
+
+std::span<const Polygon> Stroker::outline(const Path& path, const StrokeGeometry& style,
+                                          double tolerance, const Rect& visible) {
+    Buffers& b = *b_;
+    b.count = 0;
     const double h = style.width / 2;
-    if (!(h > 0) || !(tolerance > 0)) return;
+    if (!(h > 0) || !(tolerance > 0)) return {};
     // How far the outline reaches from the path: a miter up to the limit, a
     // square cap's corner at sqrt 2 half-widths. Miters are counted up to 1e6
     // half-widths, so that a limit of 1e308 cannot switch the culling off; a
     // longer spike from a join out of reach of the image is not drawn.
     const double reach = h * std::clamp(style.miter_limit, std::sqrt(2.0), 1e6) + tolerance;
     const Rect keep = visible.inflated(reach);
-    const Path source =
-        style.dashes.empty() ? visible_part(path, keep) : dashed(path, style, tolerance, keep);
-    Outline outline(h, tolerance, style);
+    b.pieces.clear();
+    if (style.dashes.empty())
+        visible_part(path, keep, b.pieces);
+    else
+        dashed(path, style, tolerance, keep, b);
+    Outline outline(h, tolerance, style, b);
     std::size_t points = 0;
-    for (const Subpath& sp : source.subpaths()) {
+    for (const Pieces::Run& run : b.pieces.runs) {
         if (points >= kMaxOutlinePoints) break;
-        const std::size_t before = out.size();
-        outline.subpath(sp, out);
-        for (std::size_t i = before; i < out.size(); ++i) points += out[i].size();
+        if (run.begin == run.end) continue; // a lone move_to draws nothing
+        const std::size_t before = b.count;
+        outline.subpath(run.start, b.pieces.segments_of(run), run.closed);
+        for (std::size_t i = before; i < b.count; ++i) points += b.polygons[i].size();
     }
+    return {b.polygons.data(), b.count};
+}
+
+void stroke_outline(const Path& path, const StrokeGeometry& style, double tolerance,
+                    std::vector<Polygon>& out, const Rect& visible) {
+    Stroker stroker;
+    for (const Polygon& poly : stroker.outline(path, style, tolerance, visible))
+        out.push_back(poly);
 }
 
 } // namespace casteljau

@@ -40,14 +40,40 @@
 #include "casteljau/geom/rect.h"
 #include "casteljau/scene/scene.h"
 
+#include <memory>
+#include <span>
 #include <vector>
 
 namespace casteljau {
 
 using Polygon = std::vector<Point>;
 
+/// Builds stroke outlines, keeping every buffer between calls: a renderer
+/// stroking path after path allocates nothing once they have grown.
+class Stroker {
+  public:
+    Stroker();
+    ~Stroker();
+    /// Moves the buffers.
+    Stroker(Stroker&&) noexcept;
+    /// Moves the buffers.
+    Stroker& operator=(Stroker&&) noexcept;
+
+    /// The outline polygons of the stroke (in the path's own coordinates),
+    /// valid until the next call. `tolerance` (> 0) and `visible` are in the
+    /// same coordinates.
+    std::span<const Polygon> outline(const Path& path, const StrokeGeometry& style,
+                                     double tolerance, const Rect& visible = Rect::everything());
+
+    /// The buffers (opaque: defined in stroker.cpp).
+    struct Buffers;
+
+  private:
+    std::unique_ptr<Buffers> b_;
+};
+
 /// Appends the outline polygons of the stroke (in the path's own coordinates)
-/// to `out`. `tolerance` (> 0) and `visible` are in the same coordinates.
+/// to `out`: Stroker::outline with buffers of its own, for one-off use.
 void stroke_outline(const Path& path, const StrokeGeometry& style, double tolerance,
                     std::vector<Polygon>& out, const Rect& visible = Rect::everything());
 
