@@ -31,13 +31,11 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
             band.settle();
         }
     };
-    if (n == 1) {
-        work(0);
-    } else {
-        std::vector<std::thread> pool;
-        for (int t = 0; t < n; ++t) pool.emplace_back(work, t);
-        for (std::thread& th : pool) th.join();
-    }
+    // The calling thread is worker 0: n - 1 threads are started per frame.
+    std::vector<std::thread> pool;
+    for (int t = 1; t < n; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (std::thread& th : pool) th.join();
     RenderStats total;
     for (const RenderStats& s : stats) total += s;
     return total;
