@@ -59,60 +59,61 @@ double max_normal_turn(double h, double tol) {
 
 class Sampler {
   public:
-    Sampler(double h, double tol, std::vector<double>& ts)
-        : tol_(tol), cos_dphi_(std::cos(max_normal_turn(h, tol))), ts_(ts) {}
+    Sampler(double h, double tol, std::vector<FlatVertex>& vertices)
+        : tol_(tol), cos_dphi_(std::cos(max_normal_turn(h, tol))), vertices_(vertices) {}
 
     // Samples of one segment, t = 0 first.
     void run(const Segment& s, std::vector<Sample>& out) {
-        out.push_back({segment_start(s), tangent(s, 0.0)});
-        // (a): the guided flattener's parameters at tol / 2 (cheaper per
+        Vec2 d = tangent(s, 0.0);
+        out.push_back({segment_start(s), d});
+        // (a): the guided flattener's vertices at tol / 2 (cheaper per
         // sample than adaptive's exact chords; measured faster on thin
         // strokes in bench/render/cairo_compare_bench, where (a) dominates).
-        ts_.clear();
+        vertices_.clear();
         std::visit(
             [&](const auto& c) {
                 flatten_curve(c, FlattenOptions{tol_ / 2, FlattenMethod::Guided, 0},
-                              [&](const FlatVertex& v) { ts_.push_back(v.t); });
+                              [&](const FlatVertex& v) { vertices_.push_back(v); });
             },
             s);
-        double ta = 0;
-        for (double tb : ts_) {
-            refine(s, ta, tb, out);
-            ta = tb;
+        FlatVertex a{segment_start(s), 0.0};
+        for (const FlatVertex& b : vertices_) {
+            refine(s, a, b, d, out);
+            a = b;
         }
     }
 
   private:
-    // (b) on [ta, tb], by bisection over a fixed stack (depth 16).
-    void refine(const Segment& s, double ta, double tb, std::vector<Sample>& out) {
+    // (b) between the curve points a and b, by bisection over a fixed stack
+    // (depth 16); `d` is the unit tangent at a on entry, at b on return.
+    void refine(const Segment& s, FlatVertex a, FlatVertex b, Vec2& d, std::vector<Sample>& out) {
         struct Span {
-            double a, b;
+            FlatVertex a, b;
             int depth;
         };
         std::array<Span, 18> stack;
         int top = 0;
-        stack[top++] = {ta, tb, 0};
-        Vec2 da = tangent(s, ta);
+        stack[top++] = {a, b, 0};
         while (top > 0) {
             const Span sp = stack[--top];
-            const Vec2 db = tangent(s, sp.b);
+            const Vec2 db = tangent(s, sp.b.t);
             // The unit tangents turn by more than dphi in [0, pi] exactly when
             // their dot product is below cos(dphi): no angle needs computing.
-            const bool turns = da.dot(db) < cos_dphi_;
-            const double chord = distance(segment_eval(s, sp.a), segment_eval(s, sp.b));
-            if (turns && chord > tol_ / 64 && sp.depth < 16) {
-                const double m = 0.5 * (sp.a + sp.b);
-                stack[top++] = {m, sp.b, sp.depth + 1};
-                stack[top++] = {sp.a, m, sp.depth + 1};
+            const bool turns = d.dot(db) < cos_dphi_;
+            if (turns && sp.depth < 16 && distance(sp.a.p, sp.b.p) > tol_ / 64) {
+                const double m = 0.5 * (sp.a.t + sp.b.t);
+                const FlatVertex mid{segment_eval(s, m), m};
+                stack[top++] = {mid, sp.b, sp.depth + 1};
+                stack[top++] = {sp.a, mid, sp.depth + 1};
                 continue;
             }
-            out.push_back({sp.b >= 1 ? segment_end(s) : segment_eval(s, sp.b), db, turns});
-            da = db;
+            out.push_back({sp.b.p, db, turns});
+            d = db;
         }
     }
 
     double tol_, cos_dphi_;
-    std::vector<double>& ts_; // the flattener's parameters, a buffer kept between strokes
+    std::vector<FlatVertex>& vertices_; // the flattener's, a buffer kept between strokes
 };
 
 // The subpaths to outline (the visible part of a path, or its dashes), with
@@ -166,7 +167,7 @@ struct Pieces {
 struct Stroker::Buffers {
     Pieces pieces;
     std::vector<const Segment*> segs;
-    std::vector<double> ts;
+    std::vector<FlatVertex> vertices;
     std::vector<Sample> samples;
     std::vector<Point> right;
     std::vector<FlatVertex> dash_vertices;
@@ -189,7 +190,7 @@ namespace {
 class Outline {
   public:
     Outline(double h, double tol, const StrokeGeometry& st, Stroker::Buffers& b)
-        : h_(h), dphi_(max_normal_turn(h, tol)), st_(st), b_(b), sampler_(h, tol, b.ts) {}
+        : h_(h), dphi_(max_normal_turn(h, tol)), st_(st), b_(b), sampler_(h, tol, b.vertices) {}
 
     // Arc of radius h around c from direction u0 to u1, turning `sweep` radians
     // (signed), endpoints excluded.
