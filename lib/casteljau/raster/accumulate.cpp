@@ -8,12 +8,26 @@ namespace casteljau {
 void CoverageRow::reset(int width) {
     width_ = width;
     acc_.assign(std::size_t(width) + 2, 0.0f);
-    clear_range();
+    marks_.assign((std::size_t(width) + 2 + 63) / 64, 0);
+    begin_ = width_ + 1, end_ = 0;
 }
 
 void CoverageRow::touch(int i0, int i1) {
     begin_ = std::min(begin_, i0);
     end_ = std::max(end_, i1);
+    // Bits [i0, i1), a word at a time: an edge usually touches a few columns.
+    for (int i = i0; i < i1;) {
+        const int bit = i & 63, n = std::min(64 - bit, i1 - i);
+        const std::uint64_t ones = n == 64 ? ~std::uint64_t(0) : (std::uint64_t(1) << n) - 1;
+        marks_[std::size_t(i) >> 6] |= ones << bit;
+        i += n;
+    }
+}
+
+void CoverageRow::clear_range() {
+    if (begin_ < end_)
+        std::fill(marks_.begin() + (begin_ >> 6), marks_.begin() + ((end_ - 1) >> 6) + 1, 0);
+    begin_ = width_ + 1, end_ = 0;
 }
 
 void CoverageRow::add_segment(float xa, float ya, float xb, float yb, float dir) {

@@ -17,10 +17,17 @@
 // passed left of the column, the second the trapezoid right of the edge
 // inside it; after the last column c = dir * h. Vertical edges are the
 // one-column case. The arithmetic is float: coordinates are below 2^14.
+//
+// Sparse rows. Besides the differences the row keeps one bit per column an
+// edge touched, so the sweep visits touched columns only (next_marked): a
+// row of a wide shape costs its edges, not its width.
 #pragma once
 
 #include "casteljau/raster/edge.h"
 
+#include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <vector>
 
 namespace casteljau {
@@ -37,18 +44,30 @@ class CoverageRow {
 
     /// The touched columns are [begin(), end()); empty when begin() >= end().
     int begin() const { return begin_; }
-    /// Where the curve ends (t = 1).
+    /// One past the last touched column.
     int end() const { return end_; }
     /// The accumulated differences (width + 2 entries).
     float* data() { return acc_.data(); }
     /// Row width in pixels.
     int width() const { return width_; }
-    /// Forgets the touched range after a sweep has zeroed it.
-    void clear_range() { begin_ = width_ + 1, end_ = 0; }
+    /// Forgets the touched columns after a sweep has zeroed them.
+    void clear_range();
+    /// The first touched column in [j, end), or `end` when there is none.
+    int next_marked(int j, int end) const {
+        if (j >= end) return end;
+        std::size_t w = std::size_t(j) >> 6;
+        std::uint64_t bits = marks_[w] & (~std::uint64_t(0) << (j & 63));
+        while (bits == 0) {
+            if (int(++w << 6) >= end) return end;
+            bits = marks_[w];
+        }
+        return std::min(end, int(w << 6) + std::countr_zero(bits));
+    }
 
   private:
     void touch(int i0, int i1);
     std::vector<float> acc_; ///< width + 2 entries: an edge at x = width writes acc[width + 1]
+    std::vector<std::uint64_t> marks_; ///< bit i: column i was touched since the last sweep
     int width_ = 0, begin_ = 0, end_ = 0;
 };
 

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 
 namespace casteljau {
 
@@ -17,22 +15,6 @@ constexpr float kInvisible = 1e-6f;
 // with one coverage value; shorter runs join the per-pixel span around them,
 // where writing a few coverage values costs less than an extra span call.
 constexpr int kSolidRun = 16;
-
-// The first column in [j, end) where an edge deposited something. Eight
-// columns per test: a cell no edge touched is +0.0f, all bits zero (a sum
-// that cancels to zero is +0.0f too), so one OR of four 64-bit words tests
-// eight cells. A -0.0f cell only ends the wide steps early; the exact test
-// after them skips it.
-int next_touched(const float* acc, int j, int end) {
-    while (j + 8 <= end) {
-        std::uint64_t w[4];
-        std::memcpy(w, acc + j, sizeof w);
-        if ((w[0] | w[1] | w[2] | w[3]) != 0) break;
-        j += 8;
-    }
-    while (j < end && acc[j] == 0.0f) ++j;
-    return j;
-}
 
 // Turns one row's runs of constant coverage, left to right, into spans.
 class RowSpans {
@@ -83,12 +65,16 @@ void sweep_row(CoverageRow& row, int y, int x_offset, FillRule rule, std::vector
     float* acc = row.data();
     RowSpans spans(sink, scratch.data(), y, x_offset);
     // The running sum changes only where an edge deposited something; between
-    // those columns the coverage is constant: one run.
+    // those columns the coverage is constant: one run. Only touched columns
+    // are visited (CoverageRow::next_marked).
     float s = 0;
     for (int i = begin; i < end;) {
         s += acc[i];
         acc[i] = 0;
-        const int j = next_touched(acc, i + 1, end);
+        // The next column where the sum changes: a touched column whose
+        // deposits did not cancel to zero.
+        int j = row.next_marked(i + 1, end);
+        while (j < end && acc[j] == 0.0f) j = row.next_marked(j + 1, end);
         spans.run(i, j, apply_fill_rule(s, rule));
         i = j;
     }
