@@ -13,9 +13,14 @@
 // (3/4 of the largest offset for a cubic, 1/2 for a quadratic). L(t) lies on
 // the chord segment, so every curve point is within `bound` of the chord and,
 // pairing the same t, every chord point within `bound` of the curve: the
-// Hausdorff distance is at most `bound`. The test compares squares, so an
-// accepted piece costs no square root and no division. Rational curves
-// (conics, RationalBezier) use the hull bound of flatness.h instead.
+// Hausdorff distance is at most `bound`. Where every inner control point
+// projects inside the chord, the same Bernstein sum bounds the distance to
+// the chord's line by (1 - 2^(1-n)) max_i dist(P_i, line), and the whole curve
+// projects inside the chord (hull property), so the smaller of the two bounds
+// is used: the parametric one overestimates curves whose speed varies. The
+// test compares squares, so an accepted piece costs no square root and no
+// division. Rational curves (conics, RationalBezier) use the hull bound of
+// flatness.h instead.
 //
 // The cut. A piece of parameter length h of a smooth curve has bound ~ c h^2
 // (the second differences of the control points scale with h^2), so a piece
