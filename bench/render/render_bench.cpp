@@ -9,6 +9,7 @@
 #include "casteljau/svg/reader.h"
 
 #include <benchmark/benchmark.h>
+#include <chrono>
 #include <cstring>
 
 namespace casteljau {
@@ -59,6 +60,33 @@ BENCHMARK(BM_DenseSceneThreads)
     ->ArgName("threads")
     ->UseRealTime()
     ->Unit(benchmark::kMillisecond);
+
+// The scaling ratio measured frame against frame: every iteration renders the
+// dense scene on 1 thread and then on 2, so both see the same machine load
+// (on a shared machine the 1-thread time alone moves by 30% between runs).
+// Counters: one_thread_ms, two_threads_ms and speedup (their ratio).
+void BM_ThreadScaling(benchmark::State& state) {
+    static const Scene scene = load(CASTELJAU_EXAMPLES "/svg/dense.svg");
+    BandRenderer renderer;
+    Canvas canvas(int(scene.width), int(scene.height));
+    double one = 0, two = 0;
+    using Clock = std::chrono::steady_clock;
+    for (auto _ : state) {
+        const auto t0 = Clock::now();
+        renderer.render(scene, Affine::identity(), canvas, {}, {}, 1);
+        const auto t1 = Clock::now();
+        renderer.render(scene, Affine::identity(), canvas, {}, {}, 2);
+        const auto t2 = Clock::now();
+        one += std::chrono::duration<double, std::milli>(t1 - t0).count();
+        two += std::chrono::duration<double, std::milli>(t2 - t1).count();
+        state.SetIterationTime(std::chrono::duration<double>(t2 - t0).count());
+    }
+    const double n = double(state.iterations());
+    state.counters["one_thread_ms"] = one / n;
+    state.counters["two_threads_ms"] = two / n;
+    state.counters["speedup"] = one / two;
+}
+BENCHMARK(BM_ThreadScaling)->UseManualTime()->Unit(benchmark::kMillisecond);
 
 void BM_FullCanvasFill(benchmark::State& state) {
     static const Scene scene = [] {
