@@ -24,7 +24,7 @@ Scene load(const std::string& path) {
     return std::move(*r.scene);
 }
 
-void render_frames(benchmark::State& state, const Scene& scene, bool antialias, int threads = 1) {
+void render_frames(benchmark::State& state, const Scene& scene, bool antialias) {
     BandRenderer renderer;
     Canvas canvas;
     RenderOptions options;
@@ -33,8 +33,8 @@ void render_frames(benchmark::State& state, const Scene& scene, bool antialias, 
     // The renderer clears every pixel to the background itself.
     canvas.reset(int(scene.width), int(scene.height));
     for (auto _ : state) {
-        segments = renderer.render(scene, Affine::identity(), canvas, options, {}, threads)
-                       .flatten.segments_out;
+        segments =
+            renderer.render(scene, Affine::identity(), canvas, options, {}, 1).flatten.segments_out;
         benchmark::DoNotOptimize(canvas.row(0));
     }
     const double px = scene.width * scene.height;
@@ -48,18 +48,6 @@ void BM_DenseScene(benchmark::State& state) {
     render_frames(state, scene, state.range(0) != 0);
 }
 BENCHMARK(BM_DenseScene)->Arg(1)->Arg(0)->ArgName("antialias")->Unit(benchmark::kMillisecond);
-
-// Bands on 1 and 2 threads (wall time: UseRealTime), for the scaling ratio.
-void BM_DenseSceneThreads(benchmark::State& state) {
-    static const Scene scene = load(CASTELJAU_EXAMPLES "/svg/dense.svg");
-    render_frames(state, scene, true, int(state.range(0)));
-}
-BENCHMARK(BM_DenseSceneThreads)
-    ->Arg(1)
-    ->Arg(2)
-    ->ArgName("threads")
-    ->UseRealTime()
-    ->Unit(benchmark::kMillisecond);
 
 // The scaling ratio measured frame against frame: every iteration renders the
 // dense scene on 1 thread and then on 2, so both see the same machine load

@@ -49,6 +49,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <span>
 
 namespace casteljau {
 
@@ -69,13 +70,10 @@ inline double guided_weight_sq(int n) noexcept {
     return w * w;
 }
 
-/// How far from flat a polynomial Bezier is: its squared deviation bound (see
-/// the top of the file) over the squared tolerance, given as `scaled_tol` =
-/// tol^2 / guided_weight_sq(degree); at most 1 when flat. Accepting costs no
-/// division.
-template <class Curve>
-inline double guided_excess(const Curve& c, double scaled_tol) noexcept {
-    const auto p = c.points();
+/// guided_excess of a polynomial Bezier given by its control points (a fixed
+/// extent for Bez<N>, so the loop over them unrolls).
+template <std::size_t E>
+inline double polynomial_excess(std::span<const Point, E> p, double scaled_tol) noexcept {
     const std::size_t n = p.size() - 1;
     const Vec2 chord = p[n] - p[0];
     const double len_sq = chord.length_sq();
@@ -96,14 +94,19 @@ inline double guided_excess(const Curve& c, double scaled_tol) noexcept {
     }
     return param / scaled_tol;
 }
-/// Rational curves: the hull bound (flatness.h), squared, over the squared tolerance.
-inline double guided_excess(const HConic& c, double tol_sq) noexcept {
-    const double d = hull_deviation(c);
-    return d * d / tol_sq;
-}
-inline double guided_excess(const RationalBezier& c, double tol_sq) noexcept {
-    const double d = hull_deviation(c);
-    return d * d / tol_sq;
+
+/// How far from flat a piece is: its squared deviation bound (see the top of
+/// the file) over the squared tolerance, given as `scaled_tol` = tol^2 /
+/// guided_weight_sq(degree) for polynomial curves, tol^2 for rational ones;
+/// at most 1 when flat. Accepting a polynomial piece costs no division.
+template <class Curve>
+inline double guided_excess(const Curve& c, double scaled_tol) noexcept {
+    if constexpr (!requires { c.points(); }) { // rational: the hull bound of flatness.h
+        const double d = hull_deviation(c);
+        return d * d / scaled_tol;
+    } else {
+        return polynomial_excess(c.points(), scaled_tol);
+    }
 }
 
 /// The guided flattener as a range of FlatVertex (see flatten_guided for the sink form).

@@ -9,10 +9,9 @@
 namespace casteljau {
 
 Path stroke_outline_path(const Path& path, const StrokeGeometry& style, double tolerance) {
-    std::vector<Polygon> outline;
-    stroke_outline(path, style, tolerance, outline);
+    Stroker stroker;
     Path out;
-    for (const Polygon& poly : outline) {
+    for (const Polygon& poly : stroker.outline(path, style, tolerance)) {
         if (poly.empty()) continue;
         out.move_to(poly[0]);
         for (std::size_t i = 1; i < poly.size(); ++i) out.line_to(poly[i]);

@@ -57,7 +57,8 @@ class Canvas {
     int origin_y() const { return oy_; }
     /// The pixels of row y (0 <= y < height()), for writing.
     Premul* row(int y) { return row_except(y, 0, 0); }
-    /// The pixels of row y (0 <= y < height()), read-only.
+    /// The pixels of row y (0 <= y < height()), read-only; for a view_rows
+    /// band, only after settle() (an unwritten row is not cleared before).
     const Premul* row(int y) const { return pixels() + std::size_t(y) * std::size_t(w_); }
 
     /// Sets every pixel to `color`.

@@ -14,7 +14,7 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
     while (int(renderers_.size()) < n) renderers_.push_back(std::make_unique<Renderer>());
     bands_.resize(std::size_t(n));
     const PixelRect frame{0, 0, w, h};
-    std::vector<RenderStats> stats(static_cast<std::size_t>(n));
+    stats_.assign(std::size_t(n), RenderStats{});
     // Each thread takes the next band not yet taken, so a thread that drew
     // a light band goes on while another draws a dense one. A band's pixels
     // do not depend on which thread draws it. Bands are drawn in place: the
@@ -23,7 +23,7 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
     std::atomic<int> next{0};
     const auto work = [&](int t) {
         Canvas& band = bands_[std::size_t(t)];
-        RenderStats& total = stats[std::size_t(t)];
+        RenderStats& total = stats_[std::size_t(t)];
         for (int b = next++; b < bands; b = next++) {
             const int y0 = b * kBandRows, y1 = std::min(h, y0 + kBandRows);
             band.view_rows(canvas, y0, y1 - y0, background);
@@ -37,7 +37,7 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
     work(0);
     for (std::thread& th : pool) th.join();
     RenderStats total;
-    for (const RenderStats& s : stats) total += s;
+    for (const RenderStats& s : stats_) total += s;
     return total;
 }
 

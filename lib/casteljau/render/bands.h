@@ -39,6 +39,7 @@ class BandRenderer {
   private:
     std::vector<std::unique_ptr<Renderer>> renderers_;
     std::vector<Canvas> bands_;
+    std::vector<RenderStats> stats_; ///< per thread, kept between frames
 };
 
 } // namespace casteljau

@@ -183,16 +183,17 @@ void Renderer::draw_stroke(const Shape& s, const Affine& m, Canvas& target, floa
     // draws each strip's rows from that strip's outline.
     const int top = std::max(frame_.y0, target.origin_y());
     const int bottom = std::min(frame_.y1, target.origin_y() + target.height());
+    // The device tolerance in user units: divided by the largest stretch.
+    const double tolerance = options_->flatten.tolerance / m.max_scale();
+    const Affine to_user = m.inverse();
     for (int y0 = top; y0 < bottom;) {
         const int strip = frame_.y0 + (y0 - frame_.y0) / kStrokeStripRows * kStrokeStripRows;
         const int y1 = std::min(bottom, strip + kStrokeStripRows);
         const auto t = Clock::now();
         const Rect pixels{double(frame_.x0 - 1), double(strip - 1), double(frame_.x1 + 1),
                           double(std::min(frame_.y1, strip + kStrokeStripRows) + 1)};
-        // The device tolerance in user units: divided by the largest stretch.
         const std::span<const Polygon> outline =
-            stroker_.outline(s.path, *geometry, options_->flatten.tolerance / m.max_scale(),
-                             device_box(pixels, m.inverse()));
+            stroker_.outline(s.path, *geometry, tolerance, device_box(pixels, to_user));
         edges_.reset(frame_, y0, y1);
         for (const Polygon& poly : outline) {
             for (std::size_t i = 0; i < poly.size(); ++i)
