@@ -89,6 +89,12 @@ struct HConic {
                           std::span<HPoint, 3>(r[1].h));
         return r;
     }
+    /// The piece over [t0, t1], as a curve over [0, 1].
+    HConic subsegment(double t0, double t1) const {
+        HConic s{};
+        decasteljau_subsegment(std::span<const HPoint, 3>(h), t0, t1, std::span<HPoint, 3>(s.h));
+        return s;
+    }
 };
 
 } // namespace casteljau
