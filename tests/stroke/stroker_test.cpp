@@ -69,7 +69,7 @@ TEST(Stroker, OutlineLiesAtHalfWidthFromRandomCurves) {
     int checked = 0;
     for (int i = 0; i < 300; ++i) {
         const CubicBez c = testing::random_cubic(rng, 300);
-        const double w = rng.uniform(2, 30), tol = rng.log_uniform(0.02, 0.5);
+        const double w = rng.log_uniform(0.5, 30), tol = rng.log_uniform(0.02, 0.5);
         double min_radius = 1e300;
         for (int k = 0; k <= 20000; ++k) {
             const double t = k / 20000.0;

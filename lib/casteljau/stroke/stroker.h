@@ -4,13 +4,15 @@
 // Offsets. The outline's sides are the offset curves O(t) = P(t) +- h n(t),
 // h = width / 2, n the unit normal, sampled at parameters chosen so that, per
 // chord of the samples,
-//   (a) the base curve is within tol/2 of its chord (the guided flattener's
-//       test, flatten/guided.h), and
-//   (b) the normal turns by at most dphi = 2 acos(1 - tol / (2h)),
-// whence the offset curve stays within tol/2 + h (1 - cos(dphi/2)) <= tol of
-// the offset chord: the offset of a point is the base point moved by h along
-// a direction that sweeps at most dphi, and a circular arc of angle dphi
-// leaves its chord by h (1 - cos(dphi/2)). Normals are exact at every sample:
+//   (b) the normal turns by at most dphi = 2 acos(1 - tol / (2h)), at most
+//       pi/8 (at least 4 samples per quarter turn), and
+//   (a) the base curve is within tol - h (1 - cos(dphi/2)) of its chord (the
+//       guided flattener's test, flatten/guided.h): tol/2, or more for thin
+//       strokes, whose dphi is capped,
+// whence the offset curve stays within tol of the offset chord: the offset of
+// a point is the base point moved by h along a direction that sweeps at most
+// dphi, and a circular arc of angle dphi leaves its chord by
+// h (1 - cos(dphi/2)). Normals are exact at every sample:
 // the curve is never flattened first and offset after. Where the normal turns
 // fast over a vanishing length (a cusp), subdivision stops at a chord of
 // tol/64 and the offset sides are joined by a round arc there.
