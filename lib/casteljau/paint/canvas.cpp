@@ -79,7 +79,10 @@ void Canvas::composite_span(const Span& s, Premul c) {
     // A shape's span on the next row usually starts near this one (outlines
     // are continuous), and rows are a stride apart that no hardware
     // prefetcher follows: ask for that pixel's line now.
-    if (s.y + 1 < h_) __builtin_prefetch(d + w_, 1);
+    if (s.y + 1 < h_) {
+        __builtin_prefetch(d + w_, 1);
+        __builtin_prefetch(d + w_ + s.len - 1, 1);
+    }
     if (!k) { // one coverage for the whole span
         for (int i = 0; i < s.len; ++i) blend_over(d[i], c, s.solid);
         return;

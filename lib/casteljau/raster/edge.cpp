@@ -20,6 +20,11 @@ void EdgeList::add_line(Point a, Point b) {
     if (a.y > b.y) std::swap(a, b);
     // Outside the band: dropped, before any arithmetic that could differ.
     if (b.y <= row_begin_ || a.y >= row_end_) return;
+    const double top = clip_.y0, bottom = clip_.y1, left = clip_.x0, right = clip_.x1;
+    if (top <= a.y && b.y <= bottom && std::min(a.x, b.x) >= left && std::max(a.x, b.x) <= right) {
+        push(a.x, a.y, b.x, b.y, dir); // inside the clip (most edges): what the cuts below give
+        return;
+    }
     // y clip: nothing outside [y0, y1] covers a row.
     // Interpolation that stays finite for any finite end points, up to 1e308,
     // where a plain difference of two coordinates overflows (and inf * 0 is
@@ -29,12 +34,10 @@ void EdgeList::add_line(Point a, Point b) {
         const double d = q - p;
         return std::isfinite(d) ? p + d * r : (1.0 - r) * p + r * q;
     };
-    const double top = clip_.y0, bottom = clip_.y1;
     const auto x_at = [&](double y) { return mix(a.x, b.x, crossing_parameter(y, a.y, b.y)); };
     if (a.y < top) a = {x_at(top), top};
     if (b.y > bottom) b = {x_at(bottom), bottom};
     // x clip: split at the borders, then clamp (the clamped parts are vertical).
-    const double left = clip_.x0, right = clip_.x1;
     // Breakpoints in y: the ends and where the segment crosses the borders.
     double ys[4] = {a.y, 0, 0, 0};
     int n = 1;

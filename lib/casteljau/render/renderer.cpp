@@ -220,9 +220,15 @@ double Renderer::stroke_reach(const Shape& s, const Affine& m) {
 void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float opacity,
                      FillRule rule, Canvas& target) {
     const auto t = Clock::now();
-    // Spans are cut to the target's columns (the edges are the frame's).
+    // Spans are cut to the target's columns (the edges are the frame's),
+    // unless the target has all of the frame's columns (a band).
     const auto fill_through = [&](SpanSink& painter) {
-        ColumnClipSink clipped(painter, target.origin_x(), target.origin_x() + target.width());
+        const int x0 = target.origin_x(), x1 = x0 + target.width();
+        if (x0 <= edges_.clip().x0 && edges_.clip().x1 <= x1) {
+            raster_.fill(edges_, rule, options_->antialias, painter);
+            return;
+        }
+        ColumnClipSink clipped(painter, x0, x1);
         raster_.fill(edges_, rule, options_->antialias, clipped);
     };
     if (gradient) {
