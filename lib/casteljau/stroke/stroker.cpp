@@ -27,13 +27,15 @@ bool degenerate(const Segment& s) {
     return b.width() == 0 && b.height() == 0;
 }
 
-// Unit tangent at t, with the limit direction where the derivative vanishes.
-Vec2 tangent(const Segment& s, double t) {
+// Unit tangent at t of c, the curve of segment s, with the limit direction
+// where the derivative vanishes. Typed: it runs for every sample.
+template <class Curve>
+Vec2 tangent(const Segment& s, const Curve& c, double t) {
     if (t <= 0) return segment_start_tangent(s).normalized();
     if (t >= 1) return segment_end_tangent(s).normalized();
-    const Vec2 d = segment_deriv(s, t);
-    if (d.length_sq() > 1e-24 * (1 + segment_start(s).to_vec().length_sq())) return d.normalized();
-    return segment_deriv(s, std::min(1.0, t + 1e-7)).normalized();
+    const Vec2 d = c.deriv(t);
+    if (d.length_sq() > 1e-24 * (1 + c.start().to_vec().length_sq())) return d.normalized();
+    return c.deriv(std::min(1.0, t + 1e-7)).normalized();
 }
 
 // Points on one round join or cap at most, and so the least normal turn
@@ -75,47 +77,56 @@ class Sampler {
 
     // Samples of one segment, t = 0 first.
     void run(const Segment& s, std::vector<Sample>& out) {
-        Vec2 d = tangent(s, 0.0);
-        out.push_back({segment_start(s), d});
+        std::visit([&](const auto& c) { run(s, c, out); }, s);
+    }
+
+  private:
+    template <class Curve>
+    void run(const Segment& s, const Curve& c, std::vector<Sample>& out) {
+        Vec2 d = tangent(s, c, 0.0);
+        out.push_back({c.start(), d});
         // (a): the guided flattener's vertices at the base tolerance (cheaper
         // per sample than adaptive's exact chords; measured faster on thin
         // strokes in bench/render/cairo_compare_bench, where (a) dominates).
         vertices_.clear();
-        std::visit(
-            [&](const auto& c) {
-                flatten_curve(c, FlattenOptions{base_tol_, FlattenMethod::Guided, 0},
-                              [&](const FlatVertex& v) { vertices_.push_back(v); });
-            },
-            s);
-        FlatVertex a{segment_start(s), 0.0};
+        flatten_curve(c, FlattenOptions{base_tol_, FlattenMethod::Guided, 0},
+                      [&](const FlatVertex& v) { vertices_.push_back(v); });
+        FlatVertex a{c.start(), 0.0};
         for (const FlatVertex& b : vertices_) {
-            refine(s, a, b, d, out);
+            refine(s, c, a, b, d, out);
             a = b;
         }
     }
 
-  private:
     // (b) between the curve points a and b, by bisection over a fixed stack
     // (depth 16); `d` is the unit tangent at a on entry, at b on return.
-    void refine(const Segment& s, FlatVertex a, FlatVertex b, Vec2& d, std::vector<Sample>& out) {
+    template <class Curve>
+    void refine(const Segment& s, const Curve& c, FlatVertex a, FlatVertex b, Vec2& d,
+                std::vector<Sample>& out) {
         struct Span {
             FlatVertex a, b;
             int depth;
         };
-        std::array<Span, 18> stack;
+        // Left uninitialised (FlatVertex zero-initialises): this runs once per
+        // flattened vertex, and clearing the 1 KB stack cost a fifth of it.
+        union Slot {
+            Slot() {}
+            Span span;
+        };
+        std::array<Slot, 18> stack;
         int top = 0;
-        stack[top++] = {a, b, 0};
+        stack[top++].span = {a, b, 0};
         while (top > 0) {
-            const Span sp = stack[--top];
-            const Vec2 db = tangent(s, sp.b.t);
+            const Span sp = stack[--top].span;
+            const Vec2 db = tangent(s, c, sp.b.t);
             // The unit tangents turn by more than dphi in [0, pi] exactly when
             // their dot product is below cos(dphi): no angle needs computing.
             const bool turns = d.dot(db) < cos_dphi_;
             if (turns && sp.depth < 16 && distance(sp.a.p, sp.b.p) > tol_ / 64) {
                 const double m = 0.5 * (sp.a.t + sp.b.t);
-                const FlatVertex mid{segment_eval(s, m), m};
-                stack[top++] = {mid, sp.b, sp.depth + 1};
-                stack[top++] = {sp.a, mid, sp.depth + 1};
+                const FlatVertex mid{c.eval(m), m};
+                stack[top++].span = {mid, sp.b, sp.depth + 1};
+                stack[top++].span = {sp.a, mid, sp.depth + 1};
                 continue;
             }
             out.push_back({sp.b.p, db, turns});
