@@ -14,8 +14,8 @@
 
 #include "casteljau/flatten/flatness.h"
 #include "casteljau/flatten/vertex.h"
+#include "casteljau/geom/fixed_stack.h"
 
-#include <array>
 
 namespace casteljau {
 
@@ -28,19 +28,18 @@ void flatten_halving(const Curve& c, double tolerance, Sink&& sink) noexcept {
         double t0, t1;
         int depth;
     };
-    std::array<Piece, kHalvingMaxDepth + 1> stack;
-    int top = 0;
-    stack[top++] = {c, 0.0, 1.0, 0};
-    while (top > 0) {
-        const Piece piece = stack[--top];
+    FixedStack<Piece, kHalvingMaxDepth + 1> stack;
+    stack.push({c, 0.0, 1.0, 0});
+    while (!stack.empty()) {
+        const Piece piece = stack.pop();
         if (piece.depth == kHalvingMaxDepth || hull_deviation(piece.c) <= tolerance) {
             sink(FlatVertex{piece.c.end(), piece.t1});
             continue;
         }
         const auto halves = piece.c.split(0.5);
         const double tm = 0.5 * (piece.t0 + piece.t1);
-        stack[top++] = {halves[1], tm, piece.t1, piece.depth + 1};
-        stack[top++] = {halves[0], piece.t0, tm, piece.depth + 1};
+        stack.push({halves[1], tm, piece.t1, piece.depth + 1});
+        stack.push({halves[0], piece.t0, tm, piece.depth + 1});
     }
 }
 

@@ -1,9 +1,9 @@
 #include "casteljau/raster/path_edges.h"
 
 #include "casteljau/flatten/error.h"
+#include "casteljau/geom/fixed_stack.h"
 
 #include <algorithm>
-#include <array>
 
 namespace casteljau {
 
@@ -42,11 +42,10 @@ struct EdgeEmitter {
             Curve c;
             int depth;
         };
-        std::array<Piece, kCullDepth + 1> stack;
-        int top = 0;
-        stack[top++] = {curve, 0};
-        while (top > 0) {
-            const Piece p = stack[--top];
+        FixedStack<Piece, kCullDepth + 1> stack;
+        stack.push({curve, 0});
+        while (!stack.empty()) {
+            const Piece p = stack.pop();
             const Rect box = p.c.control_bounds();
             // Outside the clip, or outside the band of rows asked for. The
             // decisions below depend on the clip only, never on the band, so
@@ -70,8 +69,8 @@ struct EdgeEmitter {
                 continue;
             }
             const auto halves = p.c.split(0.5);
-            stack[top++] = {halves[1], p.depth + 1};
-            stack[top++] = {halves[0], p.depth + 1};
+            stack.push({halves[1], p.depth + 1});
+            stack.push({halves[0], p.depth + 1});
         }
     }
 };

@@ -1,6 +1,7 @@
 #include "casteljau/stroke/stroker.h"
 
 #include "casteljau/flatten/flatten.h"
+#include "casteljau/geom/fixed_stack.h"
 #include "casteljau/geom/line_clip.h"
 
 #include <algorithm>
@@ -107,17 +108,10 @@ class Sampler {
             FlatVertex a, b;
             int depth;
         };
-        // Left uninitialised (FlatVertex zero-initialises): this runs once per
-        // flattened vertex, and clearing the 1 KB stack cost a fifth of it.
-        union Slot {
-            Slot() {}
-            Span span;
-        };
-        std::array<Slot, 18> stack;
-        int top = 0;
-        stack[top++].span = {a, b, 0};
-        while (top > 0) {
-            const Span sp = stack[--top].span;
+        FixedStack<Span, 18> stack; // runs once per flattened vertex
+        stack.push({a, b, 0});
+        while (!stack.empty()) {
+            const Span sp = stack.pop();
             const Vec2 db = tangent(s, c, sp.b.t);
             // The unit tangents turn by more than dphi in [0, pi] exactly when
             // their dot product is below cos(dphi): no angle needs computing.
@@ -125,8 +119,8 @@ class Sampler {
             if (turns && sp.depth < 16 && distance(sp.a.p, sp.b.p) > tol_ / 64) {
                 const double m = 0.5 * (sp.a.t + sp.b.t);
                 const FlatVertex mid{c.eval(m), m};
-                stack[top++].span = {mid, sp.b, sp.depth + 1};
-                stack[top++].span = {sp.a, mid, sp.depth + 1};
+                stack.push({mid, sp.b, sp.depth + 1});
+                stack.push({sp.a, mid, sp.depth + 1});
                 continue;
             }
             out.push_back({sp.b.p, db, turns});
@@ -478,11 +472,14 @@ void visible_part(const Path& path, const Rect& keep, Pieces& out) {
                     using Curve = std::decay_t<decltype(curve)>;
                     if constexpr (std::is_same_v<Curve, Line>)
                         return keep_line(curve.start(), curve.end());
-                    std::array<std::pair<Curve, int>, kCullDepth + 1> stack;
-                    int top = 0;
-                    stack[top++] = {curve, 0};
-                    while (top > 0) {
-                        const auto [c, depth] = stack[--top];
+                    struct Piece {
+                        Curve c;
+                        int depth;
+                    };
+                    FixedStack<Piece, kCullDepth + 1> stack;
+                    stack.push({curve, 0});
+                    while (!stack.empty()) {
+                        const auto [c, depth] = stack.pop();
                         const Rect box = c.control_bounds();
                         if (!box.intersects(keep)) {
                             open = false, cut = true;
@@ -492,8 +489,8 @@ void visible_part(const Path& path, const Rect& keep, Pieces& out) {
                             keep_line(c.start(), c.end());
                         } else {
                             const auto halves = c.split(0.5);
-                            stack[top++] = {halves[1], depth + 1};
-                            stack[top++] = {halves[0], depth + 1};
+                            stack.push({halves[1], depth + 1});
+                            stack.push({halves[0], depth + 1});
                         }
                     }
                 },
