@@ -7,6 +7,7 @@
 #include "casteljau/flatten/guided.h"
 #include "casteljau/flatten/halving.h"
 #include "casteljau/flatten/uniform.h"
+#include "casteljau/geom/fixed_stack.h"
 
 #include <array>
 #include <string>
@@ -46,6 +47,27 @@ inline HConic subdivision_form(const Conic& c) { return HConic::from(c); }
 /// image: 2^-40 of a 1e9 px curve is ~1e-3 px, so deeper never helps, and a
 /// piece still over 4 image sizes at this depth is taken as its chord.
 inline constexpr int kCullDepth = 40;
+
+/// The culling walk: halves `curve` depth first, calling visit(piece, depth)
+/// on each piece from the start of the curve to its end; a piece is halved
+/// when visit returns true and depth < kCullDepth (at the cap, visit must
+/// take the piece whole).
+template <class Curve, class Visit>
+void cull_walk(const Curve& curve, Visit&& visit) noexcept {
+    struct Piece {
+        Curve c;
+        int depth;
+    };
+    FixedStack<Piece, kCullDepth + 1> stack;
+    stack.push({curve, 0});
+    while (!stack.empty()) {
+        const Piece p = stack.pop();
+        if (!visit(p.c, p.depth) || p.depth == kCullDepth) continue;
+        const auto halves = p.c.split(0.5);
+        stack.push({halves[1], p.depth + 1});
+        stack.push({halves[0], p.depth + 1});
+    }
+}
 
 /// UniformBest's N per curve, memoized per thread (keyed by the curve's exact
 /// control points and the tolerance), so that repeated renders for a

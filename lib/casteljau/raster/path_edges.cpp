@@ -1,7 +1,6 @@
 #include "casteljau/raster/path_edges.h"
 
 #include "casteljau/flatten/error.h"
-#include "casteljau/geom/fixed_stack.h"
 
 #include <algorithm>
 
@@ -38,40 +37,28 @@ struct EdgeEmitter {
         // Pieces up to a few clip sizes are flattened whole: culling them
         // further would cost more splits than the segments it saves.
         const double small = 4.0 * std::max(clip.width(), clip.height());
-        struct Piece {
-            Curve c;
-            int depth;
-        };
-        FixedStack<Piece, kCullDepth + 1> stack;
-        stack.push({curve, 0});
-        while (!stack.empty()) {
-            const Piece p = stack.pop();
-            const Rect box = p.c.control_bounds();
+        cull_walk(curve, [&](const Curve& c, int depth) {
+            const Rect box = c.control_bounds();
             // Outside the clip, or outside the band of rows asked for. The
             // decisions below depend on the clip only, never on the band, so
             // a band gets exactly the edges the whole frame would.
-            if (box.y1 <= upper || box.y0 >= lower || box.x0 >= right) continue;
-            if (box.y1 <= rows_top || box.y0 >= rows_bottom) continue;
-            if (box.x1 <= left) {
-                edges.add_line(p.c.start(), p.c.end());
-                ++stats.segments_out;
-                continue;
-            }
+            if (box.y1 <= upper || box.y0 >= lower || box.x0 >= right) return false;
+            if (box.y1 <= rows_top || box.y0 >= rows_bottom) return false;
             const bool inside =
                 box.x0 >= left && box.y0 >= upper && box.x1 <= right && box.y1 <= lower;
-            if (inside || (box.width() <= small && box.height() <= small)) {
-                flatten(p.c);
-                continue;
+            if (box.x1 > left && (inside || (box.width() <= small && box.height() <= small))) {
+                flatten(c);
+                return false;
             }
-            if (p.depth == kCullDepth) { // still over 2^40 x 4 canvas sizes: see path_edges.h
-                edges.add_line(p.c.start(), p.c.end());
+            // Left of the clip (only its winding counts), or still over 2^40
+            // x 4 canvas sizes at the cap (see path_edges.h): the chord.
+            if (box.x1 <= left || depth == kCullDepth) {
+                edges.add_line(c.start(), c.end());
                 ++stats.segments_out;
-                continue;
+                return false;
             }
-            const auto halves = p.c.split(0.5);
-            stack.push({halves[1], p.depth + 1});
-            stack.push({halves[0], p.depth + 1});
-        }
+            return true;
+        });
     }
 };
 

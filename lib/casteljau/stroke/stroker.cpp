@@ -472,14 +472,7 @@ void visible_part(const Path& path, const Rect& keep, Pieces& out) {
                     using Curve = std::decay_t<decltype(curve)>;
                     if constexpr (std::is_same_v<Curve, Line>)
                         return keep_line(curve.start(), curve.end());
-                    struct Piece {
-                        Curve c;
-                        int depth;
-                    };
-                    FixedStack<Piece, kCullDepth + 1> stack;
-                    stack.push({curve, 0});
-                    while (!stack.empty()) {
-                        const auto [c, depth] = stack.pop();
+                    cull_walk(curve, [&](const Curve& c, int depth) {
                         const Rect box = c.control_bounds();
                         if (!box.intersects(keep)) {
                             open = false, cut = true;
@@ -488,11 +481,10 @@ void visible_part(const Path& path, const Rect& keep, Pieces& out) {
                         } else if (depth == kCullDepth) {
                             keep_line(c.start(), c.end());
                         } else {
-                            const auto halves = c.split(0.5);
-                            stack.push({halves[1], depth + 1});
-                            stack.push({halves[0], depth + 1});
+                            return true;
                         }
-                    }
+                        return false;
+                    });
                 },
                 seg);
         }
