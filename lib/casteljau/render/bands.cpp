@@ -2,9 +2,27 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <thread>
 
 namespace casteljau {
+
+void BandRenderer::sort_into_bands(const Scene& scene, const Affine& view, int height, int bands) {
+    if (int(band_nodes_.size()) < bands) band_nodes_.resize(std::size_t(bands));
+    for (int b = 0; b < bands; ++b) band_nodes_[std::size_t(b)].clear();
+    for (const Node& n : scene.root.children) {
+        const Rect box = Renderer::node_reach_box(n, view);
+        // Left out only where provably outside every band, as draw_shape
+        // tests a band: box.y1 <= its top or box.y0 >= its bottom. The rows
+        // are clamped to the frame first (a NaN end takes the frame's end).
+        if (box.y1 <= 0 || box.y0 >= double(height)) continue;
+        const double y0 = box.y0 >= 0 ? box.y0 : 0.0;
+        const double y1 = box.y1 <= double(height) ? box.y1 : double(height);
+        const int first = int(y0) / kBandRows;
+        const int last = std::min(bands - 1, std::max(0, int(std::ceil(y1)) - 1) / kBandRows);
+        for (int b = first; b <= last; ++b) band_nodes_[std::size_t(b)].push_back(&n);
+    }
+}
 
 RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas& canvas,
                                  const RenderOptions& options, Premul background, int threads) {
@@ -20,6 +38,7 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
     // do not depend on which thread draws it. Bands are drawn in place: the
     // band canvas is a view of the band's rows of the frame (the rows of
     // different bands are disjoint, and a band's rows are contiguous).
+    sort_into_bands(scene, view, h, bands);
     std::atomic<int> next{0};
     const auto work = [&](int t) {
         Canvas& band = bands_[std::size_t(t)];
@@ -27,7 +46,8 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
         for (int b = next++; b < bands; b = next++) {
             const int y0 = b * kBandRows, y1 = std::min(h, y0 + kBandRows);
             band.view_rows(canvas, y0, y1 - y0, background);
-            total += renderers_[std::size_t(t)]->render(scene, view, band, options, frame);
+            total += renderers_[std::size_t(t)]->render_nodes(band_nodes_[std::size_t(b)], view,
+                                                              band, options, frame);
             band.settle();
         }
     };

@@ -13,7 +13,10 @@
 // shapes in the same order, so the result is bit-identical to one thread
 // (tested).
 // Flattening is repeated per band for shapes that cross several bands; pieces
-// wholly outside a band are culled before flattening.
+// wholly outside a band are culled before flattening. The scene's top-level
+// nodes are sorted into the bands they reach once per frame
+// (Renderer::node_reach_box), so a band visits only those: a node outside a
+// band changes none of its pixels, so leaving it out changes no bit.
 #pragma once
 
 #include "casteljau/render/renderer.h"
@@ -37,7 +40,11 @@ class BandRenderer {
                        const RenderOptions& options, Premul background, int threads);
 
   private:
+    /// Puts each of the root's children into the list of every band it reaches.
+    void sort_into_bands(const Scene& scene, const Affine& view, int height, int bands);
+
     std::vector<std::unique_ptr<Renderer>> renderers_;
+    std::vector<std::vector<const Node*>> band_nodes_; ///< per band, kept between frames
     std::vector<Canvas> bands_;
     std::vector<RenderStats> stats_; ///< per thread, kept between frames
 };

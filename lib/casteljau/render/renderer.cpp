@@ -81,6 +81,13 @@ Rect Renderer::reach_box(const Shape& s, const Affine& view) {
     return device_box(s.path.control_bounds(), m).inflated(stroke_reach(s, m));
 }
 
+Rect Renderer::node_reach_box(const Node& n, const Affine& view) {
+    if (const Shape* s = std::get_if<Shape>(&n.item)) return reach_box(*s, view);
+    Rect r = Rect::empty();
+    for (const Node& c : std::get<Group>(n.item).children) r = r.united(node_reach_box(c, view));
+    return r;
+}
+
 Canvas& Renderer::layer(int depth) {
     while (int(layers_.size()) <= depth) layers_.push_back(std::make_unique<Canvas>());
     return *layers_[std::size_t(depth)];

@@ -66,6 +66,9 @@ class Renderer {
     /// its control box mapped, grown by the stroke's reach.
     static Rect reach_box(const Shape& s, const Affine& view);
 
+    /// reach_box of a node: a shape's, or the union of a group's children's.
+    static Rect node_reach_box(const Node& n, const Affine& view);
+
     /// How far (device px) a shape's stroke can reach beyond its path.
     static double stroke_reach(const Shape& s, const Affine& to_device);
 
