@@ -36,14 +36,14 @@
 // has P_1 = B(t0) + (h/N) B'(t0) and P_{N-1} = B(t1) - (h/N) B'(t1), h = t1 - t0),
 // with B and B' evaluated in the power basis; other curves take
 // subsegment(t0, t1). Unlike cutting off pieces by successive splits, no
-// piece waits on the one before it, and a level is 32 bytes.
+// piece waits on the one before it, and a level is 40 bytes.
 //
 // Cuts known flat. The parametric offsets of a polynomial piece are its
 // second differences, which a cut into k scales by 1/k^2; for a cubic they
 // are values of the linear D(t) = B''(t) / 6, whose length is convex, so one
 // test at the cut bounds every piece of it (even_cut_is_flat). When it holds,
 // the pieces are emitted untested: on the bench/flatten corpus, 40% of the
-// vertices at the same count and positions, for 1.2-1.3x the speed.
+// vertices, at the same count and positions, for 1.1x the speed.
 //
 // Guarantees. Every emitted piece passed the test, except pieces of at most
 // 2^-kGuidedMinLog2 of the parameter range, emitted as their chord: reached

@@ -103,7 +103,8 @@ inline void CoverageRow::add_segment(float xa, float ya, float xb, float yb, flo
     const float x_left = std::min(xa, xb), x_right = std::max(xa, xb);
     const float h_per_x = h / (x_right - x_left);
     const int first = std::min(int(x_left), width_), last = std::min(int(x_right), width_);
-    if (first == last) { // within one column (a steep edge): the loop below, unrolled
+    if (first == last) { // within one column (a steep edge): the loop below, unrolled to
+                         // its one pass with the same arithmetic, so the same bits
         const float c =
             (x_right - x_left) * h_per_x * (float(first + 1) - 0.5f * (x_left + x_right));
         acc_[std::size_t(first)] += c;

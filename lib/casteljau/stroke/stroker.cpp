@@ -63,8 +63,8 @@ double max_normal_turn(double h, double tol) {
 // The tolerance left for (a) once (b) has taken h (1 - cos(dphi/2)) =
 // 2 h sin^2(dphi/4) (written without the cancellation of 1 - cos): tol / 2
 // when dphi comes from the tolerance, more when the cap of pi/8 on dphi
-// leaves (b) less (a 1 px stroke at 0.25 px: 0.24 px, 1.9x the base
-// tolerance, 0.72x the samples).
+// leaves (b) less (a 1 px stroke at 0.25 px: 0.24 px instead of 0.125, so
+// about 1/sqrt(1.9) = 0.72x the samples on its curves).
 double base_tolerance(double h, double tol) {
     const double s = std::sin(max_normal_turn(h, tol) / 4);
     return tol - std::min(tol / 2, 2 * h * s * s);
