@@ -148,10 +148,14 @@ class HermitePieces {
         prev_ = {c.start(), power_.c[0]};
         end_deriv_ = (c.p[N] - c.p[N - 1]) * double(N);
     }
-    /// Moves to t1 without a test; returns the point there.
-    Point advance(double t1) noexcept {
-        eval(t1);
-        return accept();
+    /// Moves to t1 without a test; returns the point there. Only the `last`
+    /// piece of a cut known flat needs the derivative (for the probe after it).
+    Point advance(double t1, bool last) noexcept {
+        if (last) {
+            eval(t1);
+            return accept();
+        }
+        return prev_.p = t1 == 1.0 ? end_ : power_.eval(t1);
     }
     /// Whether each of k equal pieces of [t0, t1] passes the parametric test.
     /// The piece [a, a + h] of a cubic has P_i - L_i = -h^2 D(a + i h / 3) for
@@ -227,7 +231,7 @@ class SubsegmentPieces {
     /// The end of the last probed piece.
     Point accept() const noexcept { return next_; }
     /// Moves to t1 without a test; returns the point there.
-    Point advance(double t1) noexcept { return next_ = t1 == 1.0 ? c_.end() : c_.eval(t1); }
+    Point advance(double t1, bool) noexcept { return next_ = t1 == 1.0 ? c_.end() : c_.eval(t1); }
     /// No bound on even cuts: every piece is tested.
     bool even_cut_is_flat(double, double, int, double) const noexcept { return false; }
 
@@ -269,7 +273,7 @@ class GuidedFlattener : public FlatVertexRange<GuidedFlattener<Curve>> {
             if (level.done == level.k) --top_; // a failing last piece reuses the slot
             if (level.sure) {
                 t_ = t1;
-                out = {pieces_.advance(t1), t1};
+                out = {pieces_.advance(t1, level.done == level.k), t1};
                 return true;
             }
             const double excess = pieces_.probe(t0, t1, scaled_tol_);
