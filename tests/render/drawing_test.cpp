@@ -3,26 +3,18 @@
 #include "casteljau/render/drawing.h"
 #include "casteljau/svg/reader.h"
 #include "corpus.h"
+#include "pixels.h"
 
 #include <algorithm>
-#include <cstring>
 #include <gtest/gtest.h>
 
 namespace casteljau {
 namespace {
 
+using testing::differing_rows;
 using testing::Rng;
 
 constexpr Premul kBackground{0.5f, 0.25f, 0.0f, 0.5f};
-
-// Rows of `tile` (placed at its origin) that differ from the same pixels of `full`.
-int differing_rows(const Canvas& full, const Canvas& tile) {
-    int differing = 0;
-    for (int y = 0; y < tile.height(); ++y)
-        differing += std::memcmp(full.row(y + tile.origin_y()) + tile.origin_x(), tile.row(y),
-                                 std::size_t(tile.width()) * sizeof(Premul)) != 0;
-    return differing;
-}
 
 PixelRect random_rect(Rng& rng, int w, int h) {
     const int x0 = rng.integer(-10, w - 1), y0 = rng.integer(-10, h - 1);
@@ -97,13 +89,9 @@ TEST(PartialRender, RedrawingTheDamageAfterEditsEqualsAFullRender) {
             rng.integer(0, 4) == 0 ? drawing.remove(id) : drawing.replace(id, random_shape(rng, w));
         drawing.render_region(edited, damage, kBackground);
         drawing.render(reference, kBackground, {}, 2);
-        int differing = 0;
-        for (int y = 0; y < h; ++y)
-            differing +=
-                std::memcmp(edited.row(y), reference.row(y), std::size_t(w) * sizeof(Premul)) != 0;
-        ASSERT_EQ(differing, 0) << "edit " << edit << " of shape " << id << ", damage " << damage.x0
-                                << "," << damage.y0 << " " << damage.width() << "x"
-                                << damage.height();
+        ASSERT_EQ(differing_rows(reference, edited), 0)
+            << "edit " << edit << " of shape " << id << ", damage " << damage.x0 << "," << damage.y0
+            << " " << damage.width() << "x" << damage.height();
     }
 }
 

@@ -3,8 +3,8 @@
 #include "casteljau/render/bands.h"
 #include "casteljau/render/renderer.h"
 #include "casteljau/svg/reader.h"
+#include "pixels.h"
 
-#include <cstring>
 #include <gtest/gtest.h>
 
 namespace casteljau {
@@ -133,18 +133,12 @@ TEST(Render, BandsAreBitIdenticalToOneThread) {
             a.reset(w, h); // transparent, as the bands clear it
             Renderer().render(*doc.scene, Affine::scale(1.5), a, o);
             one.render(*doc.scene, Affine::scale(1.5), b, o, {0, 0, 0, 0}, 1);
-            int whole_differs = 0;
-            for (int y = 0; y < h; ++y)
-                whole_differs +=
-                    std::memcmp(a.row(y), b.row(y), std::size_t(w) * sizeof(Premul)) != 0;
-            EXPECT_EQ(whole_differs, 0) << file << ": bands against one whole frame, aa " << aa;
+            EXPECT_EQ(testing::differing_rows(a, b), 0)
+                << file << ": bands against one whole frame, aa " << aa;
             for (int threads : {2, 3, 7}) {
                 many.render(*doc.scene, Affine::scale(1.5), b, o, {0, 0, 0, 0}, threads);
-                int differing = 0;
-                for (int y = 0; y < h; ++y)
-                    differing +=
-                        std::memcmp(a.row(y), b.row(y), std::size_t(w) * sizeof(Premul)) != 0;
-                EXPECT_EQ(differing, 0) << file << " with " << threads << " threads, aa " << aa;
+                EXPECT_EQ(testing::differing_rows(a, b), 0)
+                    << file << " with " << threads << " threads, aa " << aa;
             }
         }
     }

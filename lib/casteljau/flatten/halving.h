@@ -16,7 +16,6 @@
 #include "casteljau/flatten/vertex.h"
 #include "casteljau/geom/fixed_stack.h"
 
-
 namespace casteljau {
 
 inline constexpr int kHalvingMaxDepth = 24;

@@ -26,13 +26,20 @@ Rect device_box(const Rect& b, const Affine& m) {
         .united(m * Point{b.x1, b.y0});
 }
 
+// The union over a node's shapes of box_of(shape).
+template <class BoxOf>
+Rect united_over_shapes(const Node& n, const BoxOf& box_of) {
+    if (const Shape* s = std::get_if<Shape>(&n.item)) return box_of(*s);
+    Rect r = Rect::empty();
+    for (const Node& c : std::get<Group>(n.item).children)
+        r = r.united(united_over_shapes(c, box_of));
+    return r;
+}
+
 // Device-space bounds of a node, from the shapes' tight user-space bounds.
 Rect node_bounds(const Node& n, const Affine& view) {
-    if (const Shape* s = std::get_if<Shape>(&n.item))
-        return device_box(s->path.bounds(), view * s->transform);
-    Rect r = Rect::empty();
-    for (const Node& c : std::get<Group>(n.item).children) r = r.united(node_bounds(c, view));
-    return r;
+    return united_over_shapes(
+        n, [&](const Shape& s) { return device_box(s.path.bounds(), view * s.transform); });
 }
 
 } // namespace
@@ -82,10 +89,7 @@ Rect Renderer::reach_box(const Shape& s, const Affine& view) {
 }
 
 Rect Renderer::node_reach_box(const Node& n, const Affine& view) {
-    if (const Shape* s = std::get_if<Shape>(&n.item)) return reach_box(*s, view);
-    Rect r = Rect::empty();
-    for (const Node& c : std::get<Group>(n.item).children) r = r.united(node_reach_box(c, view));
-    return r;
+    return united_over_shapes(n, [&](const Shape& s) { return reach_box(s, view); });
 }
 
 Canvas& Renderer::layer(int depth) {

@@ -5,7 +5,6 @@
 #include "casteljau/geom/line_clip.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -65,16 +64,17 @@ double max_normal_turn(double h, double tol) {
 // when dphi comes from the tolerance, more when the cap of pi/8 on dphi
 // leaves (b) less (a 1 px stroke at 0.25 px: 0.24 px instead of 0.125, so
 // about 1/sqrt(1.9) = 0.72x the samples on its curves).
-double base_tolerance(double h, double tol) {
-    const double s = std::sin(max_normal_turn(h, tol) / 4);
+double base_tolerance(double h, double tol, double dphi) {
+    const double s = std::sin(dphi / 4);
     return tol - std::min(tol / 2, 2 * h * s * s);
 }
 
 class Sampler {
   public:
-    Sampler(double h, double tol, std::vector<FlatVertex>& vertices)
-        : tol_(tol), base_tol_(base_tolerance(h, tol)),
-          cos_dphi_(std::cos(max_normal_turn(h, tol))), vertices_(vertices) {}
+    // dphi = max_normal_turn(h, tol).
+    Sampler(double h, double tol, double dphi, std::vector<FlatVertex>& vertices)
+        : tol_(tol), base_tol_(base_tolerance(h, tol, dphi)), cos_dphi_(std::cos(dphi)),
+          vertices_(vertices) {}
 
     // Samples of one segment, t = 0 first.
     void run(const Segment& s, std::vector<Sample>& out) {
@@ -206,7 +206,8 @@ namespace {
 class Outline {
   public:
     Outline(double h, double tol, const StrokeGeometry& st, Stroker::Buffers& b)
-        : h_(h), dphi_(max_normal_turn(h, tol)), st_(st), b_(b), sampler_(h, tol, b.vertices) {}
+        : h_(h), dphi_(max_normal_turn(h, tol)), st_(st), b_(b),
+          sampler_(h, tol, dphi_, b.vertices) {}
 
     // Arc of radius h around c from direction u0 to u1, turning `sweep` radians
     // (signed), endpoints excluded.
