@@ -14,16 +14,18 @@ TEST(Guided, CutCountIsTheFourthRootRoundedUpAndCapped) {
     for (int j = 1; j <= kGuidedMaxCut + 2; ++j) {
         const double e = double(j) * j * j * j;
         const int want = std::min(j, kGuidedMaxCut);
-        EXPECT_EQ(guided_cut(e), want) << "excess " << e;
-        EXPECT_EQ(guided_cut(std::nextafter(e, 0.0)), want) << "just below " << e;
-        EXPECT_EQ(guided_cut(std::nextafter(e, 1e300)), std::min(j + 1, kGuidedMaxCut))
+        EXPECT_EQ(guided_cut({e}), want) << "excess " << e;
+        EXPECT_EQ(guided_cut({std::nextafter(e, 0.0)}), want) << "just below " << e;
+        EXPECT_EQ(guided_cut({std::nextafter(e, 1e300)}), std::min(j + 1, kGuidedMaxCut))
             << "just above " << e;
     }
+    // The excess as a fraction with any denominator (the chord's squared
+    // length scales it when the perpendicular bound is the tighter one).
     testing::Rng rng(5);
     for (int i = 0; i < 1000; ++i) {
-        const double e = rng.log_uniform(1.0001, 1e4);
+        const double e = rng.log_uniform(1.0001, 1e4), den = rng.log_uniform(1e-6, 1e6);
         const double want = std::min(std::ceil(std::sqrt(std::sqrt(e))), double(kGuidedMaxCut));
-        EXPECT_EQ(guided_cut(e), int(want)) << "excess " << e;
+        EXPECT_EQ(guided_cut({e * den, den}), int(want)) << "excess " << e << " as x/" << den;
     }
 }
 
@@ -50,8 +52,8 @@ void expect_hermite_matches_subsegment(const Bez<N>& c, testing::Rng& rng) {
                   1e-9 * (1 + c.start().to_vec().length()));
         pieces.advance(t0, true);
     }
-    const double hermite = pieces.probe(t0, t1, scaled_tol);
-    const double direct = guided_excess(c.subsegment(t0, t1), scaled_tol);
+    const double hermite = pieces.probe(t0, t1, scaled_tol).value();
+    const double direct = guided_excess(c.subsegment(t0, t1), scaled_tol).value();
     // Equal up to rounding, where a flat piece reports 0 on either side of 1.
     if (hermite > 1.001 || direct > 1.001) {
         EXPECT_NEAR(hermite, direct, 1e-6 * direct)
@@ -86,7 +88,7 @@ void expect_even_cut_test_is_exact(const Bez<N>& c, testing::Rng& rng, int& flat
     }
     // A tolerance around the worst piece, so that both outcomes are exercised.
     const double scaled_tol = worst * rng.log_uniform(0.25, 4);
-    const bool claimed = HermitePieces<N>(c).even_cut_is_flat(t0, t1, k, scaled_tol);
+    const bool claimed = HermitePieces<N>(c).even_cut_is_flat((t1 - t0) / k, t0, t1, scaled_tol);
     if (worst <= scaled_tol * (1 - 1e-9)) {
         EXPECT_TRUE(claimed) << "tight; worst " << worst;
     }

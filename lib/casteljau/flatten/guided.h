@@ -84,10 +84,22 @@ inline double guided_weight_sq(int n) noexcept {
     return w * w;
 }
 
+/// How far from flat a piece is: its squared deviation bound (see the top of
+/// the file) over the squared tolerance, as the fraction num / den, so that
+/// neither accepting a piece nor counting its cut divides (a division is
+/// 13-20 cycles on the loop's critical path).
+struct GuidedExcess {
+    double num, den = 1; ///< den > 0
+    /// Whether the piece passes the test.
+    bool flat() const noexcept { return num <= den; }
+    /// The excess as one number.
+    double value() const noexcept { return num / den; }
+};
+
 /// guided_excess of a polynomial Bezier given by its control points (a fixed
 /// extent for Bez<N>, so the loop over them unrolls).
 template <std::size_t E>
-inline double polynomial_excess(std::span<const Point, E> p, double scaled_tol) noexcept {
+inline GuidedExcess polynomial_excess(std::span<const Point, E> p, double scaled_tol) noexcept {
     const std::size_t n = p.size() - 1;
     const Vec2 chord = p[n] - p[0];
     const double len_sq = chord.length_sq();
@@ -104,23 +116,21 @@ inline double polynomial_excess(std::span<const Point, E> p, double scaled_tol) 
         perp = across * across > perp ? across * across : perp;
     }
     // The distance to the chord's line is the tighter bound when every inner
-    // point projects inside the chord (then the whole curve does). A flat
-    // piece returns before any division.
+    // point projects inside the chord (then the whole curve does); its square
+    // is perp / len_sq.
     const bool perp_applies = inside && len_sq > 0;
-    if ((param <= scaled_tol) | (perp_applies & (perp <= scaled_tol * len_sq))) return 0;
-    if (perp_applies) param = std::min(param, perp / len_sq);
-    return param / scaled_tol;
+    if ((param <= scaled_tol) | (perp_applies & (perp <= scaled_tol * len_sq))) return {0};
+    if (perp_applies && perp < param * len_sq) return {perp, scaled_tol * len_sq};
+    return {param, scaled_tol};
 }
 
-/// How far from flat a piece is: its squared deviation bound (see the top of
-/// the file) over the squared tolerance, given as `scaled_tol` = tol^2 /
-/// guided_weight_sq(degree) for polynomial curves, tol^2 for rational ones;
-/// at most 1 when flat. Accepting a polynomial piece costs no division.
+/// The GuidedExcess of a piece, given `scaled_tol` = tol^2 /
+/// guided_weight_sq(degree) for polynomial curves, tol^2 for rational ones.
 template <class Curve>
-inline double guided_excess(const Curve& c, double scaled_tol) noexcept {
+inline GuidedExcess guided_excess(const Curve& c, double scaled_tol) noexcept {
     if constexpr (!requires { c.points(); }) { // rational: the hull bound of flatness.h
         const double d = hull_deviation(c);
-        return d * d / scaled_tol;
+        return {d * d, scaled_tol};
     } else {
         return polynomial_excess(c.points(), scaled_tol);
     }
@@ -128,10 +138,11 @@ inline double guided_excess(const Curve& c, double scaled_tol) noexcept {
 
 /// ceil(excess^(1/4)), at most kGuidedMaxCut: the number of equal pieces a
 /// piece with this excess (squared bound / squared tolerance) is cut into. By
-/// counting the j^4 below it: two square roots cost more than seven compares.
-inline int guided_cut(double excess) noexcept {
+/// counting the j^4 below it: two square roots and a division cost more than
+/// seven compares.
+inline int guided_cut(GuidedExcess e) noexcept {
     int k = 1;
-    for (int j = 1; j < kGuidedMaxCut; ++j) k += int(excess > double(j * j * j * j));
+    for (int j = 1; j < kGuidedMaxCut; ++j) k += int(e.num > double(j * j * j * j) * e.den);
     return k;
 }
 
@@ -156,16 +167,17 @@ class HermitePieces {
         }
         return prev_.p = t1 == 1.0 ? end_ : power_.eval(t1);
     }
-    /// Whether each of k equal pieces of [t0, t1] passes the parametric test.
+    /// Whether each of the equal pieces of length h that cut [t0, t1] passes
+    /// the parametric test.
     /// The piece [a, a + h] of a cubic has P_i - L_i = -h^2 D(a + i h / 3) for
     /// i = 1, 2, with D(t) = B''(t) / 6 = c_2 / 3 + c_3 t in the power basis;
     /// |D| is convex, so over all the pieces' inner thirds it is largest at
     /// the first or the last. A quadratic's P_1 - L_1 = -h^2 c_2 / 2 for every piece.
-    bool even_cut_is_flat(double t0, double t1, int k, double scaled_tol) const noexcept {
+    bool even_cut_is_flat(double h, double t0, double t1, double scaled_tol) const noexcept {
         if constexpr (N == 1) {
             return true;
         } else {
-            const double h = (t1 - t0) / double(k), h4 = h * h * h * h;
+            const double h4 = h * h * h * h;
             if constexpr (N == 2) return h4 * power_.c[1].length_sq() * 0.25 <= scaled_tol;
             const Vec2 a = power_.c[1] * (1.0 / 3) + power_.c[2] * (t0 + h * (1.0 / 3));
             const Vec2 b = power_.c[1] * (1.0 / 3) + power_.c[2] * (t1 - h * (1.0 / 3));
@@ -173,10 +185,10 @@ class HermitePieces {
         }
     }
     /// The excess (guided_excess) of the piece [t0, t1].
-    double probe(double t0, double t1, double scaled_tol) noexcept {
+    GuidedExcess probe(double t0, double t1, double scaled_tol) noexcept {
         eval(t1);
         if constexpr (N == 1) {
-            return 0;
+            return {0};
         } else {
             const double h = (t1 - t0) * (1.0 / N);
             std::array<Point, N + 1> p;
@@ -222,7 +234,7 @@ class SubsegmentPieces {
     /// The pieces of c, starting at t = 0.
     explicit SubsegmentPieces(const Curve& c) noexcept : c_(c) {}
     /// The excess (guided_excess) of the piece [t0, t1].
-    double probe(double t0, double t1, double scaled_tol) noexcept {
+    GuidedExcess probe(double t0, double t1, double scaled_tol) noexcept {
         const Curve piece = c_.subsegment(t0, t1);
         next_ = t1 == 1.0 ? c_.end() : piece.end();
         return guided_excess(piece, scaled_tol);
@@ -232,7 +244,7 @@ class SubsegmentPieces {
     /// Moves to t1 without a test; returns the point there.
     Point advance(double t1, bool) noexcept { return next_ = t1 == 1.0 ? c_.end() : c_.eval(t1); }
     /// No bound on even cuts: every piece is tested.
-    bool even_cut_is_flat(double, double, int, double) const noexcept { return false; }
+    bool even_cut_is_flat(double, double, double, double) const noexcept { return false; }
 
   private:
     Curve c_;
@@ -275,15 +287,16 @@ class GuidedFlattener : public FlatVertexRange<GuidedFlattener<Curve>> {
                 out = {pieces_.advance(t1, last), t1};
                 return true;
             }
-            const double excess = pieces_.probe(t0, t1, scaled_tol_);
-            if (excess <= 1.0 || t1 - t0 <= kMinStep || top_ == kMaxLevel) {
+            const GuidedExcess excess = pieces_.probe(t0, t1, scaled_tol_);
+            if (excess.flat() || t1 - t0 <= kMinStep || top_ == kMaxLevel) {
                 t_ = t1;
                 out = {pieces_.accept(), t1};
                 return true;
             }
             const int k = guided_cut(excess);
-            const bool sure = pieces_.even_cut_is_flat(t0, t1, k, scaled_tol_);
-            stack_[std::size_t(++top_)] = {t0, (t1 - t0) / double(k), t1, 0, k, sure};
+            const double step = (t1 - t0) * kInverse[std::size_t(k)];
+            const bool sure = pieces_.even_cut_is_flat(step, t0, t1, scaled_tol_);
+            stack_[std::size_t(++top_)] = {t0, step, t1, 0, k, sure};
         }
         return false;
     }
@@ -295,6 +308,11 @@ class GuidedFlattener : public FlatVertexRange<GuidedFlattener<Curve>> {
         int done, k;
         bool sure;
     };
+    // 1/k, so that a cut's step is a product, not a division on the loop's
+    // critical path. The rounding of 1/k moves inner cuts by an ulp; the last
+    // piece still ends at the level's t1 exactly.
+    static constexpr double kInverse[kGuidedMaxCut + 1] = {
+        0, 1.0, 1.0 / 2, 1.0 / 3, 1.0 / 4, 1.0 / 5, 1.0 / 6, 1.0 / 7, 1.0 / 8};
     static constexpr double kMinStep = 1.0 / double(1 << kGuidedMinLog2);
     static constexpr int kMaxLevel = kGuidedMinLog2 + 1;
     typename GuidedPiecesOf<Curve>::type pieces_;
