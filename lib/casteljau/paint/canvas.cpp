@@ -69,7 +69,7 @@ void Canvas::fill(Premul color) {
     std::fill(stale_.begin(), stale_.end(), 0);
 }
 
-void Canvas::composite_span(const Span& s, Premul c) {
+void Canvas::composite_span(const Span& s, const Premul& c) {
     const float* k = s.coverage;
     if (!k && c.a == 1.0f && s.solid == 1.0f) { // opaque over the whole span: a store
         store_run(row_except(s.y, s.x, s.x + s.len) + s.x, s.len, c);

@@ -64,7 +64,10 @@ class Canvas {
     /// Sets every pixel to `color`.
     void fill(Premul color);
     /// Source-over of `color` through the span's coverage (span in this canvas's pixels).
-    void composite_span(const Span& s, Premul color);
+    /// The color by reference: by value, its 16 bytes travel in two registers
+    /// and are joined again through the stack, a store-forwarding stall on
+    /// every span (2% of the hairline scene's frame in the profile).
+    void composite_span(const Span& s, const Premul& color);
     /// Source-over of a layer (placed at its origin, relative to this canvas's
     /// origin), scaled by `opacity`; the parts outside this canvas are dropped.
     void composite_layer(const Canvas& layer, float opacity);

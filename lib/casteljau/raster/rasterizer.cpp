@@ -1,6 +1,7 @@
 #include "casteljau/raster/rasterizer.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -10,19 +11,22 @@ void Rasterizer::fill(const EdgeList& edges, FillRule rule, bool antialias, Span
     width_ = edges.clip().width();
     x0_ = edges.clip().x0;
     const int row_end = edges.row_end();
-    sorted_.clear();
-    std::uint32_t order = 0;
-    for (const Edge& e : edges.edges())
-        sorted_.push_back(
-            {e.x0 - float(x0_), e.y0, e.y1, (e.x1 - e.x0) / (e.y1 - e.y0), e.dir, order++});
-    if (sorted_.empty() || width_ <= 0) return;
-    // Ties in y0 are broken by the order the edges were added, so any two
+    const std::vector<Edge>& list = edges.edges();
+    if (list.empty() || width_ <= 0) return;
+    // Sorted by y0, ties broken by the order the edges were added, so any two
     // edges meet a row in the same order whichever subset of the outline a
     // band or tile holds: the rows' float sums, and so the pixels, are then
-    // the same bit for bit.
-    std::sort(sorted_.begin(), sorted_.end(), [](const Active& a, const Active& b) {
-        return a.y0 < b.y0 || (a.y0 == b.y0 && a.order < b.order);
-    });
+    // the same bit for bit. Both in one integer key: clipped y0 >= 0 (edge.h),
+    // and non-negative floats order as their bits (+ 0.0f makes -0 into +0).
+    keys_.clear();
+    for (std::uint32_t i = 0; i < list.size(); ++i)
+        keys_.push_back(std::uint64_t(std::bit_cast<std::uint32_t>(list[i].y0 + 0.0f)) << 32 | i);
+    std::sort(keys_.begin(), keys_.end());
+    sorted_.clear();
+    for (const std::uint64_t key : keys_) {
+        const Edge& e = list[std::uint32_t(key)];
+        sorted_.push_back({e.x0 - float(x0_), e.y0, e.y1, (e.x1 - e.x0) / (e.y1 - e.y0), e.dir});
+    }
     if (antialias && row_.width() != width_) row_.reset(width_);
     active_.clear();
     std::size_t next = 0;

@@ -32,7 +32,6 @@ class Rasterizer {
   private:
     struct Active {
         float x0, y0, y1, dxdy, dir;
-        std::uint32_t order; ///< position in the edge list: the tie-breaker of the sort
     };
     struct Crossing {
         float x, dir;
@@ -40,6 +39,7 @@ class Rasterizer {
     void row_antialiased(int y, FillRule rule, SpanSink& sink);
     void row_aliased(int y, FillRule rule, SpanSink& sink);
 
+    std::vector<std::uint64_t> keys_; ///< the sort's: y0's bits, then the edge's index
     std::vector<Active> sorted_, active_;
     std::vector<Crossing> crossings_;
     std::vector<float> coverage_;

@@ -99,8 +99,10 @@ class Sampler {
         }
     }
 
-    // (b) between the curve points a and b, by bisection over a fixed stack
-    // (depth 16); `d` is the unit tangent at a on entry, at b on return.
+    // (b) between the curve points a and b, by bisection to depth 16; `d` is
+    // the unit tangent at a on entry, at b on return. The left half is worked
+    // on at once and only right halves wait on the stack (one per depth), so
+    // the usual span, which needs no cut, touches no stack.
     template <class Curve>
     void refine(const Segment& s, const Curve& c, FlatVertex a, FlatVertex b, Vec2& d,
                 std::vector<Sample>& out) {
@@ -108,10 +110,9 @@ class Sampler {
             FlatVertex a, b;
             int depth;
         };
-        FixedStack<Span, 18> stack; // runs once per flattened vertex
-        stack.push({a, b, 0});
-        while (!stack.empty()) {
-            const Span sp = stack.pop();
+        FixedStack<Span, 16> right_halves; // runs once per flattened vertex
+        Span sp{a, b, 0};
+        for (;;) {
             const Vec2 db = tangent(s, c, sp.b.t);
             // The unit tangents turn by more than dphi in [0, pi] exactly when
             // their dot product is below cos(dphi): no angle needs computing.
@@ -119,12 +120,14 @@ class Sampler {
             if (turns && sp.depth < 16 && distance(sp.a.p, sp.b.p) > tol_ / 64) {
                 const double m = 0.5 * (sp.a.t + sp.b.t);
                 const FlatVertex mid{c.eval(m), m};
-                stack.push({mid, sp.b, sp.depth + 1});
-                stack.push({sp.a, mid, sp.depth + 1});
+                right_halves.push({mid, sp.b, sp.depth + 1});
+                sp = {sp.a, mid, sp.depth + 1};
                 continue;
             }
             out.push_back({sp.b.p, db, turns});
             d = db;
+            if (right_halves.empty()) return;
+            sp = right_halves.pop();
         }
     }
 
