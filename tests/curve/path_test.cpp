@@ -50,6 +50,58 @@ TEST(Path, TransformAndBounds) {
     EXPECT_NEAR(t.x1, 205, 1e-12);
 }
 
+// The box of every subpath's start and control points, from scratch.
+Rect control_box_of(const Path& p) {
+    Rect r = Rect::empty();
+    for (const Subpath& s : p.subpaths()) {
+        r = r.united(s.start);
+        for (const Segment& seg : s.segments) r = r.united(segment_control_bounds(seg));
+    }
+    return r;
+}
+
+// control_bounds() is kept as the path is built; it equals the box computed
+// from scratch after every call, lone move_tos (dropped by the next one),
+// empty closes and transforms included.
+TEST(Path, KeptControlBoundsEqualTheBoxFromScratch) {
+    testing::Rng rng(11);
+    for (int i = 0; i < 200; ++i) {
+        Path p;
+        for (int step = 0; step < 12; ++step) {
+            const Point a = rng.point(100) - Vec2{50, 50}, b = rng.point(100), c = rng.point(300);
+            switch (rng.integer(0, 6)) {
+            case 0:
+                p.move_to(a);
+                break;
+            case 1:
+                p.line_to(a);
+                break;
+            case 2:
+                p.cubic_to(a, b, c);
+                break;
+            case 3:
+                p.conic_to(b, c, 2.0);
+                break;
+            case 4:
+                p.close();
+                break;
+            case 5:
+                p.append(Line{{c, a}});
+                break;
+            default:
+                p.transform(Affine::translate({-20, 7}) * Affine::scale(1.5));
+                break;
+            }
+            const Rect want = control_box_of(p), got = p.control_bounds();
+            ASSERT_EQ(got.is_empty(), want.is_empty()) << "path " << i << " step " << step;
+            if (!want.is_empty()) {
+                ASSERT_EQ(got.min(), want.min()) << "path " << i << " step " << step;
+                ASSERT_EQ(got.max(), want.max()) << "path " << i << " step " << step;
+            }
+        }
+    }
+}
+
 TEST(Path, ContinuityOfConstructedJoints) {
     // Two cubics meeting at (10, 0); the second one's handles set each level.
     const CubicBez a{{0, 0}, {3, 4}, {7, -2}, {10, 0}};

@@ -101,12 +101,26 @@ Continuity joint_continuity(const Segment& a, const Segment& b, double tol) {
     return Continuity::C2;
 }
 
+namespace {
+
+// The box of a subpath's start and of its segments' boxes (`of`).
+Rect subpath_box(const Subpath& s, Rect (*of)(const Segment&)) {
+    Rect r = Rect::empty().united(s.start);
+    for (const Segment& seg : s.segments) r = r.united(of(seg));
+    return r;
+}
+
+} // namespace
+
 void Path::append(const Segment& s) {
     if (!open_) {
         subpaths_.push_back({segment_start(s), {}, false});
         open_ = true;
     }
-    subpaths_.back().segments.push_back(s);
+    Subpath& last = subpaths_.back();
+    if (last.segments.empty()) control_box_ = control_box_.united(last.start);
+    control_box_ = control_box_.united(segment_control_bounds(s));
+    last.segments.push_back(s);
     current_ = segment_end(s);
 }
 
@@ -182,20 +196,24 @@ void Path::transform(const Affine& m) {
         s.start = m * s.start;
         for (Segment& seg : s.segments) seg = segment_transformed(seg, m);
     }
+    control_box_ = Rect::empty();
+    for (const Subpath& s : subpaths_)
+        if (!s.segments.empty())
+            control_box_ = control_box_.united(subpath_box(s, segment_control_bounds));
     current_ = m * current_;
 }
 
-Rect Path::united_bounds(Rect (*of)(const Segment&)) const {
+Rect Path::bounds() const {
     Rect r = Rect::empty();
-    for (const Subpath& s : subpaths_) {
-        r = r.united(s.start);
-        for (const Segment& seg : s.segments) r = r.united(of(seg));
-    }
+    for (const Subpath& s : subpaths_) r = r.united(subpath_box(s, segment_bounds));
     return r;
 }
 
-Rect Path::bounds() const { return united_bounds(segment_bounds); }
-Rect Path::control_bounds() const { return united_bounds(segment_control_bounds); }
+Rect Path::control_bounds() const {
+    if (!subpaths_.empty() && subpaths_.back().segments.empty())
+        return control_box_.united(subpaths_.back().start);
+    return control_box_;
+}
 
 Point Path::eval(std::size_t subpath, double u) const {
     const Subpath& s = subpaths_[subpath];

@@ -100,7 +100,9 @@ class Path {
     /// Tight bounds (curve extrema), and the cheaper bounds of all control
     /// points, which contain the path too (convex hull property).
     Rect bounds() const;
-    /// Box of the control points, which holds the curve (convex hull property).
+    /// Box of the control points, which holds the curve (convex hull
+    /// property). Kept as the path is built: the renderer asks for it per
+    /// shape and band.
     Rect control_bounds() const;
 
     /// The subpath's global parameterisation; u is clamped to [0, segments].
@@ -110,8 +112,10 @@ class Path {
     std::vector<Continuity> continuity(std::size_t subpath, double tol = 1e-9) const;
 
   private:
-    Rect united_bounds(Rect (*of)(const Segment&)) const;
     std::vector<Subpath> subpaths_;
+    /// control_bounds() of every subpath but a last one with no segment yet
+    /// (a lone move_to, which the next move_to drops).
+    Rect control_box_ = Rect::empty();
     Point current_{};
     bool open_ = false; ///< the last subpath accepts segments
 };

@@ -69,36 +69,8 @@ void Canvas::fill(Premul color) {
     std::fill(stale_.begin(), stale_.end(), 0);
 }
 
-void Canvas::composite_span(const Span& s, const Premul& c) {
-    const float* k = s.coverage;
-    if (!k && c.a == 1.0f && s.solid == 1.0f) { // opaque over the whole span: a store
-        store_run(row_except(s.y, s.x, s.x + s.len) + s.x, s.len, c);
-        return;
-    }
-    Premul* d = row(s.y) + s.x;
-    // A shape's span on the next row usually starts near this one (outlines
-    // are continuous), and rows are a stride apart that no hardware
-    // prefetcher follows: ask for that pixel's line now.
-    if (s.y + 1 < h_) {
-        __builtin_prefetch(d + w_, 1);
-        __builtin_prefetch(d + w_ + s.len - 1, 1);
-    }
-    if (!k) { // one coverage for the whole span
-        for (int i = 0; i < s.len; ++i) blend_over(d[i], c, s.solid);
-        return;
-    }
-    if (c.a < 1.0f) {
-        for (int i = 0; i < s.len; ++i) blend_over(d[i], c, k[i]);
-        return;
-    }
-    // Opaque: where fully covered the source replaces the pixel (the general
-    // formula gives the same bits, at the price of a read), run by run.
-    for (int i = 0; i < s.len;) {
-        int j = i;
-        while (j < s.len && k[j] == 1.0f) ++j;
-        std::fill(d + i, d + j, c);
-        for (i = j; i < s.len && k[i] != 1.0f; ++i) blend_over(d[i], c, k[i]);
-    }
+void Canvas::store_span(const Span& s, const Premul& c) {
+    store_run(row_except(s.y, s.x, s.x + s.len) + s.x, s.len, c);
 }
 
 void Canvas::composite_layer(const Canvas& layer, float opacity) {

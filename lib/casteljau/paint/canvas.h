@@ -15,6 +15,7 @@
 #include "casteljau/paint/gradient.h"
 #include "casteljau/raster/span.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace casteljau {
@@ -73,6 +74,8 @@ class Canvas {
     void composite_layer(const Canvas& layer, float opacity);
 
   private:
+    /// An opaque span of one coverage: a store (streamed when long).
+    void store_span(const Span& s, const Premul& c);
     /// Row y for writing; a row still awaiting its clear is cleared first,
     /// except for the columns [x0, x1), which the caller overwrites.
     Premul* row_except(int y, int x0, int x1) {
@@ -89,6 +92,40 @@ class Canvas {
     Premul clear_{};                   // what stale rows are cleared to
     int w_ = 0, h_ = 0, ox_ = 0, oy_ = 0;
 };
+
+// Inline, into the painters: called once per span, and a thin shape's spans
+// are a few pixels (2% of the hairline scene's frame as a call).
+inline void Canvas::composite_span(const Span& s, const Premul& c) {
+    const float* k = s.coverage;
+    if (!k && c.a == 1.0f && s.solid == 1.0f) { // opaque over the whole span: a store
+        store_span(s, c);
+        return;
+    }
+    Premul* d = row(s.y) + s.x;
+    // A shape's span on the next row usually starts near this one (outlines
+    // are continuous), and rows are a stride apart that no hardware
+    // prefetcher follows: ask for that pixel's line now.
+    if (s.y + 1 < h_) {
+        __builtin_prefetch(d + w_, 1);
+        __builtin_prefetch(d + w_ + s.len - 1, 1);
+    }
+    if (!k) { // one coverage for the whole span
+        for (int i = 0; i < s.len; ++i) blend_over(d[i], c, s.solid);
+        return;
+    }
+    if (c.a < 1.0f) {
+        for (int i = 0; i < s.len; ++i) blend_over(d[i], c, k[i]);
+        return;
+    }
+    // Opaque: where fully covered the source replaces the pixel (the general
+    // formula gives the same bits, at the price of a read), run by run.
+    for (int i = 0; i < s.len;) {
+        int j = i;
+        while (j < s.len && k[j] == 1.0f) ++j;
+        std::fill(d + i, d + j, c);
+        for (i = j; i < s.len && k[i] != 1.0f; ++i) blend_over(d[i], c, k[i]);
+    }
+}
 
 /// Adapts the raster's span interface (absolute pixel coordinates) to
 /// solid-color compositing on a canvas placed at its origin.
