@@ -121,6 +121,7 @@ void Path::append(const Segment& s) {
     if (last.segments.empty()) control_box_ = control_box_.united(last.start);
     control_box_ = control_box_.united(segment_control_bounds(s));
     last.segments.push_back(s);
+    lone_start_ = false;
     current_ = segment_end(s);
 }
 
@@ -129,6 +130,7 @@ void Path::move_to(Point p) {
     if (open_ && subpaths_.back().segments.empty()) subpaths_.pop_back();
     subpaths_.push_back({p, {}, false});
     open_ = true;
+    lone_start_ = true;
     current_ = p;
 }
 
@@ -183,6 +185,7 @@ void Path::close() {
     }
     current_ = subpaths_.empty() ? current_ : subpaths_.back().start;
     open_ = false;
+    lone_start_ = false;
 }
 
 std::size_t Path::segment_count() const {
@@ -210,9 +213,7 @@ Rect Path::bounds() const {
 }
 
 Rect Path::control_bounds() const {
-    if (!subpaths_.empty() && subpaths_.back().segments.empty())
-        return control_box_.united(subpaths_.back().start);
-    return control_box_;
+    return lone_start_ ? control_box_.united(current_) : control_box_;
 }
 
 Point Path::eval(std::size_t subpath, double u) const {

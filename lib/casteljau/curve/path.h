@@ -114,10 +114,12 @@ class Path {
   private:
     std::vector<Subpath> subpaths_;
     /// control_bounds() of every subpath but a last one with no segment yet
-    /// (a lone move_to, which the next move_to drops).
+    /// (a lone move_to, which the next move_to drops). Kept in the path
+    /// object, so that reading it touches none of the segments' storage.
     Rect control_box_ = Rect::empty();
     Point current_{};
-    bool open_ = false; ///< the last subpath accepts segments
+    bool open_ = false;       ///< the last subpath accepts segments
+    bool lone_start_ = false; ///< the last subpath has no segment yet; it starts at current_
 };
 
 } // namespace casteljau
