@@ -51,5 +51,31 @@ TEST(Canvas, LazilyClearedBandsEqualEagerClearing) {
     }
 }
 
+// Coverage 0 leaves a pixel's bits as they are, whatever the color and the
+// pixel (the dense sweep sends invisible columns between visible ones as 0).
+TEST(Canvas, ZeroCoverageLeavesPixelsBitForBit) {
+    testing::Rng rng(92);
+    const int w = 64;
+    Canvas canvas(w, 1);
+    std::vector<float> cov(w);
+    for (int trial = 0; trial < 200; ++trial) {
+        Premul* row = canvas.row(0);
+        for (int x = 0; x < w; ++x) {
+            const float a = float(rng.uniform(0, 1));
+            row[x] = {a * float(rng.uniform(0, 1)), a * float(rng.uniform(0, 1)),
+                      a * float(rng.uniform(0, 1)), a};
+        }
+        const std::vector<Premul> before(row, row + w);
+        for (int x = 0; x < w; ++x) cov[std::size_t(x)] = x % 3 == 0 ? 0.0f : 1.0f;
+        const Premul c = premultiply(
+            {float(rng.uniform(0, 1)), float(rng.uniform(0, 1)), float(rng.uniform(0, 1)), 1.0f},
+            trial % 2 ? 1.0f : float(rng.uniform(0, 1)));
+        canvas.composite_span({0, 0, w, cov.data(), 0.0f}, c);
+        for (int x = 0; x < w; x += 3)
+            ASSERT_TRUE(same(canvas.row(0)[x], before[std::size_t(x)]))
+                << "trial " << trial << " at " << x;
+    }
+}
+
 } // namespace
 } // namespace casteljau

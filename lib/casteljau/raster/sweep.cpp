@@ -36,6 +36,12 @@ class RowSpans {
         }
     }
 
+    // Columns [i, j) hold their coverage in cov already (dense sweep).
+    void pixels(int i, int j) {
+        if (start_ < 0) start_ = i;
+        end_ = j;
+    }
+
     // Emits the per-pixel span in progress, if any.
     void flush() {
         if (start_ >= 0) sink_.span({y_, x_offset_ + start_, end_ - start_, cov_ + start_, 0.0f});
@@ -71,15 +77,24 @@ float sweep_sparse(const CoverageRow& row, float* acc, int begin, int end, FillR
 
 // The same for a range narrower than kSolidRun (a thin stroke's row), where
 // no run can be solid: every column in one plain pass, which costs less than
-// finding the touched ones. The same spans bit for bit, since an untouched
-// column adds an exact 0.
-float sweep_dense(float* acc, int begin, int end, FillRule rule, RowSpans& spans) {
+// finding the touched ones, and with no branch on each column's coverage.
+// The visible columns leave as one per-pixel span, in which invisible
+// columns between them carry coverage 0: compositing 0 leaves a pixel's bits
+// as they are (D' = 0 S + 1 D), so the pixels are those of the sparse walk
+// (an untouched column adds an exact 0 to the sum).
+float sweep_dense(float* acc, int begin, int end, FillRule rule, float* cov, RowSpans& spans) {
     float s = 0;
+    int first = end, last = begin; // the visible columns lie in [first, last)
     for (int i = begin; i < end; ++i) {
         s += acc[i];
         acc[i] = 0;
-        spans.run(i, i + 1, apply_fill_rule(s, rule));
+        const float c = apply_fill_rule(s, rule);
+        const bool visible = c >= kInvisible;
+        cov[i] = visible ? c : 0.0f;
+        first = visible && first == end ? i : first;
+        last = visible ? i + 1 : last;
     }
+    if (first < last) spans.pixels(first, last);
     return s;
 }
 
@@ -98,8 +113,9 @@ void sweep_row(CoverageRow& row, int y, int x_offset, FillRule rule, std::vector
     if (scratch.size() < std::size_t(row.width())) scratch.resize(std::size_t(row.width()));
     float* acc = row.data();
     RowSpans spans(sink, scratch.data(), y, x_offset);
-    const float s = end - begin < kSolidRun ? sweep_dense(acc, begin, end, rule, spans)
-                                            : sweep_sparse(row, acc, begin, end, rule, spans);
+    const float s = end - begin < kSolidRun
+                        ? sweep_dense(acc, begin, end, rule, scratch.data(), spans)
+                        : sweep_sparse(row, acc, begin, end, rule, spans);
     std::fill(acc + end, acc + row.end(), 0.0f);
     row.clear_range();
     // Past the last touched column only edges clamped onto the right border
