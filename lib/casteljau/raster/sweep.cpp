@@ -77,7 +77,7 @@ float sweep_sparse(const CoverageRow& row, float* acc, int begin, int end, FillR
 
 // The same for a range narrower than kSolidRun (a thin stroke's row), where
 // no run can be solid: every column in one plain pass, which costs less than
-// finding the touched ones, and with no branch on each column's coverage.
+// finding the touched ones, and no run-by-run bookkeeping per column.
 // The visible columns leave as one per-pixel span, in which invisible
 // columns between them carry coverage 0: compositing 0 leaves a pixel's bits
 // as they are (D' = 0 S + 1 D), so the pixels are those of the sparse walk

@@ -26,7 +26,8 @@ inline float apply_fill_rule(float s, FillRule rule) {
     return m > 1.0f ? 2.0f - m : m;
 }
 
-/// Sweeps row `y`, emits spans of nonzero coverage, and leaves the row zeroed.
+/// Sweeps row `y`, emits spans of the covered pixels (a per-pixel span may
+/// hold pixels of coverage 0 between covered ones), and leaves the row zeroed.
 /// A running sum still nonzero after the last touched column (an outline that
 /// extends past the right border) covers the rest of the row.
 /// `scratch` holds the coverage values and is grown as needed.
