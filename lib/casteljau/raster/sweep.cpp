@@ -36,7 +36,10 @@ class RowSpans {
         }
     }
 
-    // Columns [i, j) hold their coverage in cov already (dense sweep).
+    // The per-pixel coverage buffer, indexed by column.
+    float* coverage() const { return cov_; }
+
+    // Columns [i, j) hold their coverage in coverage() already (dense sweep).
     void pixels(int i, int j) {
         if (start_ < 0) start_ = i;
         end_ = j;
@@ -82,7 +85,8 @@ float sweep_sparse(const CoverageRow& row, float* acc, int begin, int end, FillR
 // columns between them carry coverage 0: compositing 0 leaves a pixel's bits
 // as they are (D' = 0 S + 1 D), so the pixels are those of the sparse walk
 // (an untouched column adds an exact 0 to the sum).
-float sweep_dense(float* acc, int begin, int end, FillRule rule, float* cov, RowSpans& spans) {
+float sweep_dense(float* acc, int begin, int end, FillRule rule, RowSpans& spans) {
+    float* cov = spans.coverage();
     float s = 0;
     int first = end, last = begin; // the visible columns lie in [first, last)
     for (int i = begin; i < end; ++i) {
@@ -113,9 +117,8 @@ void sweep_row(CoverageRow& row, int y, int x_offset, FillRule rule, std::vector
     if (scratch.size() < std::size_t(row.width())) scratch.resize(std::size_t(row.width()));
     float* acc = row.data();
     RowSpans spans(sink, scratch.data(), y, x_offset);
-    const float s = end - begin < kSolidRun
-                        ? sweep_dense(acc, begin, end, rule, scratch.data(), spans)
-                        : sweep_sparse(row, acc, begin, end, rule, spans);
+    const float s = end - begin < kSolidRun ? sweep_dense(acc, begin, end, rule, spans)
+                                            : sweep_sparse(row, acc, begin, end, rule, spans);
     std::fill(acc + end, acc + row.end(), 0.0f);
     row.clear_range();
     // Past the last touched column only edges clamped onto the right border
