@@ -1,7 +1,6 @@
 #include "casteljau/raster/rasterizer.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -13,20 +12,27 @@ void Rasterizer::fill(const EdgeList& edges, FillRule rule, bool antialias, Span
     const int row_end = edges.row_end();
     const std::vector<Edge>& list = edges.edges();
     if (list.empty() || width_ <= 0) return;
-    // Sorted by y0, ties broken by the order the edges were added, so any two
-    // edges meet a row in the same order whichever subset of the outline a
-    // band or tile holds: the rows' float sums, and so the pixels, are then
-    // the same bit for bit. Both in one integer key: clipped y0 >= 0 (edge.h),
-    // and non-negative floats order as their bits (+ 0.0f makes -0 into +0).
-    keys_.clear();
-    for (std::uint32_t i = 0; i < list.size(); ++i)
-        keys_.push_back(std::uint64_t(std::bit_cast<std::uint32_t>(list[i].y0 + 0.0f)) << 32 | i);
-    std::sort(keys_.begin(), keys_.end());
-    sorted_.clear();
-    for (const std::uint64_t key : keys_) {
-        const Edge& e = list[std::uint32_t(key)];
-        sorted_.push_back({e.x0 - float(x0_), e.y0, e.y1, (e.x1 - e.x0) / (e.y1 - e.y0), e.dir});
+    // In order of their first row, then of addition: a stable counting sort
+    // by row. Any two edges then meet a row in the same order whichever
+    // subset of the outline a band or tile holds, so the rows' float sums, and
+    // the pixels, are the same bit for bit. (A comparison sort by y0 took 12%
+    // of the mispredicted branches of the thin-stroke scene, cachegrind; an
+    // outline's edges start in a few rows, and rows need no finer order.)
+    // Clipped y0 >= 0 (edge.h), so int() is the floor.
+    int first_row = int(list[0].y0), last_row = first_row;
+    for (const Edge& e : list) {
+        first_row = std::min(first_row, int(e.y0));
+        last_row = std::max(last_row, int(e.y0));
     }
+    // row_start_[r - first_row + 1] counts the edges of row r, then becomes
+    // the prefix sum: where row r's edges go.
+    row_start_.assign(std::size_t(last_row - first_row) + 2, 0);
+    for (const Edge& e : list) ++row_start_[std::size_t(int(e.y0) - first_row) + 1];
+    for (std::size_t r = 1; r < row_start_.size(); ++r) row_start_[r] += row_start_[r - 1];
+    sorted_.resize(list.size());
+    for (const Edge& e : list)
+        sorted_[row_start_[std::size_t(int(e.y0) - first_row)]++] = {
+            e.x0 - float(x0_), e.y0, e.y1, (e.x1 - e.x0) / (e.y1 - e.y0), e.dir};
     if (antialias && row_.width() != width_) row_.reset(width_);
     active_.clear();
     std::size_t next = 0;
