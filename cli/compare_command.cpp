@@ -48,6 +48,7 @@ void render_variant(const Scene& scene, Variant& v) {
     Renderer r;
     RenderOptions o;
     o.flatten = v.flatten;
+    o.time_stages = true;
     for (int i = 0; i < kRuns; ++i) {
         v.canvas.reset(int(std::ceil(scene.width)), int(std::ceil(scene.height)), 0, 0,
                        {1, 1, 1, 1});

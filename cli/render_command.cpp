@@ -87,7 +87,7 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
         out.status = kExitBadInput;
         return out;
     }
-    const RenderOptions options{a.flatten, a.antialias, false, a.linear_light};
+    const RenderOptions options{a.flatten, a.antialias, false, a.linear_light, !a.stats.empty()};
     std::vector<double> flatten_ms, raster_ms, frame_ms;
     RenderStats stats;
     for (int i = 0; i < a.repeat; ++i) {

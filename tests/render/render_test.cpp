@@ -144,5 +144,21 @@ TEST(Render, BandsAreBitIdenticalToOneThread) {
     }
 }
 
+// Stage times cost clock reads per shape, so they are read only on request.
+TEST(Render, StageTimesOnlyWhenAsked) {
+    const SvgResult doc = read_svg_file(CASTELJAU_EXAMPLES "/svg/strokes.svg");
+    ASSERT_TRUE(doc.scene) << doc.error;
+    Canvas c(int(doc.scene->width), int(doc.scene->height));
+    RenderOptions o;
+    const RenderStats quiet = Renderer().render(*doc.scene, Affine::identity(), c, o);
+    EXPECT_EQ(quiet.flatten_ms, 0.0);
+    EXPECT_EQ(quiet.raster_ms, 0.0);
+    o.time_stages = true;
+    const RenderStats timed = Renderer().render(*doc.scene, Affine::identity(), c, o);
+    EXPECT_GT(timed.flatten_ms, 0.0);
+    EXPECT_GT(timed.raster_ms, 0.0);
+    EXPECT_EQ(timed.flatten.segments_out, quiet.flatten.segments_out);
+}
+
 } // namespace
 } // namespace casteljau

@@ -12,11 +12,4 @@ void CoverageRow::reset(int width) {
     begin_ = width_ + 1, end_ = 0;
 }
 
-void CoverageRow::clear_range() {
-    if (begin_ < end_)
-        for (std::size_t w = std::size_t(begin_) >> 6; w <= std::size_t(end_ - 1) >> 6; ++w)
-            marks_[w] = 0;
-    begin_ = width_ + 1, end_ = 0;
-}
-
 } // namespace casteljau

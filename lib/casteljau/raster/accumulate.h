@@ -71,7 +71,7 @@ class CoverageRow {
     int width_ = 0, begin_ = 0, end_ = 0;
 };
 
-// Inline: the rasterizer calls these once per edge and row, on rows of a few
+// Inline: the rasterizer calls these once per edge or row, on rows of a few
 // columns, where a call costs as much as the work.
 inline void CoverageRow::touch(int i0, int i1) {
     begin_ = std::min(begin_, i0);
@@ -88,6 +88,13 @@ inline void CoverageRow::touch(int i0, int i1) {
     marks_[w0] |= from;
     for (std::size_t w = w0 + 1; w < w1; ++w) marks_[w] = kOnes;
     marks_[w1] |= to;
+}
+
+inline void CoverageRow::clear_range() {
+    if (begin_ < end_)
+        for (std::size_t w = std::size_t(begin_) >> 6; w <= std::size_t(end_ - 1) >> 6; ++w)
+            marks_[w] = 0;
+    begin_ = width_ + 1, end_ = 0;
 }
 
 inline void CoverageRow::add_segment(float xa, float ya, float xb, float yb, float dir) {

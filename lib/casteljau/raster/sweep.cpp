@@ -16,6 +16,16 @@ constexpr float kInvisible = 1e-6f;
 // where writing a few coverage values costs less than an extra span call.
 constexpr int kSolidRun = 16;
 
+// The nearest integer to a winding sum that is one up to float residue (no
+// ties): inline, where std::nearbyint is a libm call on every row (x86-64
+// has no rounding instruction before SSE4.1). Clamped to +-2^24, past which
+// float holds no odd integer (so no winding is told apart there), to keep
+// the conversion to int defined.
+float nearest_winding(float s) {
+    const float w = std::clamp(s, -0x1p24f, 0x1p24f);
+    return float(int(w + std::copysign(0.5f, w)));
+}
+
 // Turns one row's runs of constant coverage, left to right, into spans.
 class RowSpans {
   public:
@@ -119,13 +129,13 @@ void sweep_row(CoverageRow& row, int y, int x_offset, FillRule rule, std::vector
     RowSpans spans(sink, scratch.data(), y, x_offset);
     const float s = end - begin < kSolidRun ? sweep_dense(acc, begin, end, rule, spans)
                                             : sweep_sparse(row, acc, begin, end, rule, spans);
-    std::fill(acc + end, acc + row.end(), 0.0f);
+    if (end < row.end()) std::fill(acc + end, acc + row.end(), 0.0f); // not a memset call per row
     row.clear_range();
     // Past the last touched column only edges clamped onto the right border
     // remain (they are vertical there), so the winding is a whole number; the
     // sum carries float residue (~1e-7 per edge), which must not paint the
     // rest of the row faintly. Rounded, it is the winding of the rest.
-    if (end < row.width()) spans.run(end, row.width(), apply_fill_rule(std::nearbyint(s), rule));
+    if (end < row.width()) spans.run(end, row.width(), apply_fill_rule(nearest_winding(s), rule));
     spans.flush();
 }
 

@@ -31,13 +31,14 @@ struct RenderOptions {
     bool antialias = true;
     bool measure_error = false;          ///< fold the exact flattening error into the stats (slow)
     bool linear_light_gradients = false; ///< interpolate gradients in linear light, not sRGB
+    bool time_stages = false;            ///< fill in RenderStats' stage times (clock reads)
 };
 
 /// What a render did and how long it took.
 struct RenderStats {
     FlattenStats flatten;
-    double flatten_ms = 0; ///< edge building: culling, flattening, clipping
-    double raster_ms = 0;  ///< accumulation, sweep and compositing
+    double flatten_ms = 0; ///< edge building: culling, flattening, clipping (time_stages only)
+    double raster_ms = 0;  ///< accumulation, sweep and compositing (time_stages only)
 
     /// Sums counts and times; keeps the largest depth and error.
     RenderStats& operator+=(const RenderStats& o);
