@@ -69,8 +69,8 @@ void Canvas::fill(Premul color) {
     std::fill(stale_.begin(), stale_.end(), 0);
 }
 
-void Canvas::store_span(const Span& s, const Premul& c) {
-    store_run(row_except(s.y, s.x, s.x + s.len) + s.x, s.len, c);
+void Canvas::store_span(int y, int x, int len, const Premul& c) {
+    store_run(row_except(y, x, x + len) + x, len, c);
 }
 
 void Canvas::composite_layer(const Canvas& layer, float opacity) {
