@@ -80,7 +80,20 @@ RenderStats Renderer::render_nodes(std::span<const Node* const> nodes, const Aff
                                    Canvas& canvas, const RenderOptions& options,
                                    const PixelRect& frame) {
     begin(view, options, frame);
-    for (const Node* n : nodes) draw_node(*n, canvas, 0);
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        // A band's nodes are a sparse subset of the scene's, some 300 bytes
+        // each, which no hardware prefetcher follows: the miss on each node
+        // was 3.6% of the frame of 10k one-pixel strokes (perf). Asks for the
+        // next node's lines while this one is drawn (some microseconds).
+        // (Prefetching its path's segments too, two loads deeper, measured
+        // slower.)
+        if (i + 1 < nodes.size()) {
+            constexpr std::size_t kLine = 64; // x86-64's cache line, and most ARM cores'
+            const char* next = reinterpret_cast<const char*>(nodes[i + 1]);
+            for (std::size_t b = 0; b < sizeof(Node); b += kLine) __builtin_prefetch(next + b);
+        }
+        draw_node(*nodes[i], canvas, 0);
+    }
     return stats_;
 }
 
