@@ -1,10 +1,52 @@
 #include "casteljau/raster/rasterizer.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 
 namespace casteljau {
+
+// Edges in order of their first row, then of addition. Any two edges then
+// meet a row in the same order whichever subset of the outline a band or
+// tile holds, so the rows' float sums, and the pixels, are the same bit for
+// bit. Edges that start above the pass's first row `top` (those crossing
+// into a band) come first, by a comparison sort on (row, index): they are
+// few, one per crossing of the outline with the band's top. The others by a
+// stable counting sort over the rows they start in, which lie in the band.
+// (A comparison sort of all edges by y0 took 12% of the mispredicted branches
+// of the thin-stroke scene, cachegrind; rows need no finer order.)
+// Clipped y0 >= 0 (edge.h), so int() is the floor.
+void Rasterizer::sort_edges(const std::vector<Edge>& list, int top) {
+    keys_.clear();
+    int first_row = INT_MAX, last_row = top;
+    for (std::uint32_t i = 0; i < list.size(); ++i) {
+        const int row = int(list[i].y0);
+        if (row < top) {
+            keys_.push_back(std::uint64_t(row) << 32 | i);
+        } else {
+            first_row = std::min(first_row, row);
+            last_row = std::max(last_row, row);
+        }
+    }
+    std::sort(keys_.begin(), keys_.end());
+    // row_start_[r - first_row + 1] counts the edges of row r, then becomes
+    // the prefix sum after the edges from above: where row r's edges go.
+    first_row = std::min(first_row, last_row);
+    row_start_.assign(std::size_t(last_row - first_row) + 2, 0);
+    row_start_[0] = std::uint32_t(keys_.size());
+    for (const Edge& e : list)
+        if (int(e.y0) >= top) ++row_start_[std::size_t(int(e.y0) - first_row) + 1];
+    for (std::size_t r = 1; r < row_start_.size(); ++r) row_start_[r] += row_start_[r - 1];
+    const auto active = [&](const Edge& e) -> Active {
+        return {e.x0 - float(x0_), e.y0, e.y1, (e.x1 - e.x0) / (e.y1 - e.y0), e.dir};
+    };
+    sorted_.resize(list.size());
+    for (std::size_t k = 0; k < keys_.size(); ++k)
+        sorted_[k] = active(list[std::uint32_t(keys_[k])]);
+    for (const Edge& e : list)
+        if (int(e.y0) >= top) sorted_[row_start_[std::size_t(int(e.y0) - first_row)]++] = active(e);
+}
 
 void Rasterizer::fill(const EdgeList& edges, FillRule rule, bool antialias, SpanSink& sink) {
     width_ = edges.clip().width();
@@ -12,27 +54,7 @@ void Rasterizer::fill(const EdgeList& edges, FillRule rule, bool antialias, Span
     const int row_end = edges.row_end();
     const std::vector<Edge>& list = edges.edges();
     if (list.empty() || width_ <= 0) return;
-    // In order of their first row, then of addition: a stable counting sort
-    // by row. Any two edges then meet a row in the same order whichever
-    // subset of the outline a band or tile holds, so the rows' float sums, and
-    // the pixels, are the same bit for bit. (A comparison sort by y0 took 12%
-    // of the mispredicted branches of the thin-stroke scene, cachegrind; an
-    // outline's edges start in a few rows, and rows need no finer order.)
-    // Clipped y0 >= 0 (edge.h), so int() is the floor.
-    int first_row = int(list[0].y0), last_row = first_row;
-    for (const Edge& e : list) {
-        first_row = std::min(first_row, int(e.y0));
-        last_row = std::max(last_row, int(e.y0));
-    }
-    // row_start_[r - first_row + 1] counts the edges of row r, then becomes
-    // the prefix sum: where row r's edges go.
-    row_start_.assign(std::size_t(last_row - first_row) + 2, 0);
-    for (const Edge& e : list) ++row_start_[std::size_t(int(e.y0) - first_row) + 1];
-    for (std::size_t r = 1; r < row_start_.size(); ++r) row_start_[r] += row_start_[r - 1];
-    sorted_.resize(list.size());
-    for (const Edge& e : list)
-        sorted_[row_start_[std::size_t(int(e.y0) - first_row)]++] = {
-            e.x0 - float(x0_), e.y0, e.y1, (e.x1 - e.x0) / (e.y1 - e.y0), e.dir};
+    sort_edges(list, edges.row_begin());
     if (antialias && row_.width() != width_) row_.reset(width_);
     active_.clear();
     std::size_t next = 0;

@@ -1,11 +1,12 @@
 // The scanline driver: edges -> per-row accumulation -> sweep -> spans.
 //
-// Edges are sorted by their first row once (a counting sort); rows are
-// visited top to bottom with an active list of the edges crossing the row,
-// and rows without edges are skipped, so the cost is O(E + R + sum over rows
-// of (active edges + swept columns)), R the rows from the first edge's top to
-// the last edge's: it grows with the outline and the covered spans, never with
-// the canvas area. All buffers are kept between calls.
+// Edges are sorted by their first row once (mostly a counting sort); rows
+// are visited top to bottom with an active list of the edges crossing the
+// row, and rows without edges are skipped, so the cost is O(E + R + sum over
+// rows of (active edges + swept columns)), R the rows from the first edge's
+// top to the last's within the band: it grows with the outline and the
+// covered spans, never with the canvas area. All buffers are kept between
+// calls.
 //
 // Antialiased mode deposits exact areas (accumulate.h). Aliased mode samples
 // each pixel at its centre: a pixel is inside when the fill rule holds for the
@@ -40,7 +41,11 @@ class Rasterizer {
     void row_antialiased(int y, FillRule rule, SpanSink& sink);
     void row_aliased(int y, FillRule rule, SpanSink& sink);
 
-    std::vector<std::uint32_t> row_start_; ///< the sort's: per row, where its edges go
+    /// Fills sorted_ from the edges, in the order every band agrees on.
+    void sort_edges(const std::vector<Edge>& list, int top);
+
+    std::vector<std::uint64_t> keys_;      ///< the sort's, edges from above: row, then index
+    std::vector<std::uint32_t> row_start_; ///< the sort's, other edges: per row, where they go
     std::vector<Active> sorted_, active_;
     std::vector<Crossing> crossings_;
     std::vector<float> coverage_;
