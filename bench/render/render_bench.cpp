@@ -11,6 +11,7 @@
 #include <atomic>
 #include <benchmark/benchmark.h>
 #include <chrono>
+#include <cstdint>
 #include <cstring>
 #include <thread>
 #include <vector>
@@ -52,23 +53,37 @@ void BM_DenseScene(benchmark::State& state) {
 }
 BENCHMARK(BM_DenseScene)->Arg(1)->Arg(0)->ArgName("antialias")->Unit(benchmark::kMillisecond);
 
-// The machine's own scaling, as a reference for the renderer's: the same
-// kind of work (6 units taken from a shared counter by 1 or 2 threads started
-// for the frame), each unit read-modify-write passes over a private buffer
-// the size of a band's pixels (128 rows of 1024 float RGBA pixels, 2 MiB).
-// No data is shared, so on an idle machine with private core resources two
-// threads take half the time; what they lose here, the machine takes.
-void reference_frame(int threads) {
-    constexpr int kUnits = 6, kPasses = 24;
+// The machine's own scaling, as references for the renderer's: the same
+// sharing out (6 units taken from a shared counter by 1 or 2 threads started
+// for the frame), of work that shares no data, so on an idle machine with
+// private cores two threads take half the time; what they lose, the machine
+// takes. Two kinds of unit, each lasting about as long as one of the dense
+// scene's bands (2-4 ms on the machine of bench/README.md):
+// - memory: 80 read-modify-write passes over a private buffer the size of a
+//   band's pixels (128 rows of 1024 float RGBA pixels, 2 MiB). More memory-
+//   bound than rendering, so a floor to compare with, not a ceiling;
+// - compute: a chain of 2^23 integer multiply-adds in registers (a ceiling).
+enum class Work { Memory, Compute };
+
+void reference_frame(Work kind, int threads) {
+    constexpr int kUnits = 6, kPasses = 80;
+    constexpr long kSteps = 1L << 23;
     static std::vector<float> buffers[2] = {std::vector<float>(128 * 1024 * 4, 1.0f),
                                             std::vector<float>(128 * 1024 * 4, 1.0f)};
     std::atomic<int> next{0};
     const auto work = [&](int t) {
         std::vector<float>& b = buffers[t];
-        for (int u = next++; u < kUnits; u = next++)
-            for (int p = 0; p < kPasses; ++p)
-                for (float& v : b) v = v * 0.999f + 0.001f;
+        std::uint64_t x = 1;
+        for (int u = next++; u < kUnits; u = next++) {
+            if (kind == Work::Memory)
+                for (int p = 0; p < kPasses; ++p)
+                    for (float& v : b) v = v * 0.999f + 0.001f;
+            else
+                for (long i = 0; i < kSteps; ++i)
+                    x = x * 6364136223846793005u + 1442695040888963407u;
+        }
         benchmark::DoNotOptimize(b.data());
+        benchmark::DoNotOptimize(x);
     };
     std::vector<std::thread> pool;
     for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
@@ -79,14 +94,15 @@ void reference_frame(int threads) {
 // The scaling ratio measured frame against frame: every iteration renders the
 // dense scene on 1 thread and then on 2, so both see the same machine load
 // (on a shared machine the 1-thread time alone moves by 30% between runs),
-// and runs the machine reference (reference_frame) on 1 and on 2 threads.
-// Counters: one_thread_ms, two_threads_ms, speedup (their ratio), and
-// machine_speedup, the reference's ratio in the same iterations.
+// and runs the machine references (reference_frame) on 1 and on 2 threads.
+// Counters: one_thread_ms, two_threads_ms, speedup (their ratio), and the
+// references' ratios in the same iterations: memory_speedup, compute_speedup.
 void BM_ThreadScaling(benchmark::State& state) {
     static const Scene scene = load(CASTELJAU_EXAMPLES "/svg/dense.svg");
     BandRenderer renderer;
     Canvas canvas(int(scene.width), int(scene.height));
-    double one = 0, two = 0, ref_one = 0, ref_two = 0;
+    double one = 0, two = 0;
+    double ref[2][2] = {}; // [memory, compute][1 thread, 2 threads]
     using Clock = std::chrono::steady_clock;
     const auto ms = [](Clock::duration d) {
         return std::chrono::duration<double, std::milli>(d).count();
@@ -97,19 +113,21 @@ void BM_ThreadScaling(benchmark::State& state) {
         const auto t1 = Clock::now();
         renderer.render(scene, Affine::identity(), canvas, {}, {}, 2);
         const auto t2 = Clock::now();
-        reference_frame(1);
-        const auto t3 = Clock::now();
-        reference_frame(2);
-        const auto t4 = Clock::now();
+        for (Work kind : {Work::Memory, Work::Compute})
+            for (int threads : {1, 2}) {
+                const auto r0 = Clock::now();
+                reference_frame(kind, threads);
+                ref[int(kind)][threads - 1] += ms(Clock::now() - r0);
+            }
         one += ms(t1 - t0), two += ms(t2 - t1);
-        ref_one += ms(t3 - t2), ref_two += ms(t4 - t3);
         state.SetIterationTime(std::chrono::duration<double>(t2 - t0).count());
     }
     const double n = double(state.iterations());
     state.counters["one_thread_ms"] = one / n;
     state.counters["two_threads_ms"] = two / n;
     state.counters["speedup"] = one / two;
-    state.counters["machine_speedup"] = ref_one / ref_two;
+    state.counters["memory_speedup"] = ref[0][0] / ref[0][1];
+    state.counters["compute_speedup"] = ref[1][0] / ref[1][1];
 }
 BENCHMARK(BM_ThreadScaling)->UseManualTime()->Unit(benchmark::kMillisecond);
 
