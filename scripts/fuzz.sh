@@ -21,7 +21,9 @@ seconds="${1:-60}"; shift || true
 targets=("$@")
 [[ ${#targets[@]} -gt 0 ]] || targets=(path_data svg_read svg_render patch_read patch_render)
 
+# -g1: line tables only, enough for the sanitizers' file:line stack traces.
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
     -DCASTELJAU_FUZZ=ON -DCASTELJAU_BUILD_TESTS=OFF -DCASTELJAU_BUILD_BENCH=OFF >/dev/null
 cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]/#/fuzz_}"
 

@@ -14,8 +14,11 @@ cmake --build build -j "$jobs"
 ctest --test-dir build -j "$jobs" --output-on-failure
 
 # Sanitizers: the same tests, minus the install test (its consumer project is
-# built without the sanitizer runtime the instrumented library needs).
+# built without the sanitizer runtime the instrumented library needs). -g1:
+# line tables only, which is all a sanitizer's stack trace reads (file:line),
+# at 10-30% less compile time per file than -g.
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCASTELJAU_WERROR=ON \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
       -DCASTELJAU_SANITIZE=ON -DCASTELJAU_BUILD_BENCH=OFF
 cmake --build build-asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
