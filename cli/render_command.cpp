@@ -87,7 +87,10 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
         out.status = kExitBadInput;
         return out;
     }
-    const RenderOptions options{a.flatten, a.antialias, false, a.linear_light, !a.stats.empty()};
+    const RenderOptions options{.flatten = a.flatten,
+                                .antialias = a.antialias,
+                                .linear_light_gradients = a.linear_light,
+                                .time_stages = !a.stats.empty()};
     std::vector<double> flatten_ms, raster_ms, frame_ms;
     RenderStats stats;
     for (int i = 0; i < a.repeat; ++i) {
@@ -112,8 +115,9 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
     // single-band pass (bands repeat the flattening of shapes they share).
     Canvas scratch{int(w), int(h)};
     Renderer measure;
-    const RenderStats m =
-        measure.render(scene, Affine::scale(s), scratch, {options.flatten, a.antialias, true});
+    const RenderStats m = measure.render(
+        scene, Affine::scale(s), scratch,
+        {.flatten = options.flatten, .antialias = a.antialias, .measure_error = true});
     stats.flatten = m.flatten;
     out.stats_json =
         "{\"input\": " + json_string(input) + ", \"output\": " + json_string(output) +

@@ -30,22 +30,23 @@ void Rasterizer::sort_edges(const std::vector<Edge>& list, int top) {
         }
     }
     std::sort(keys_.begin(), keys_.end());
+    if (first_row > last_row) first_row = last_row; // every edge starts above `top`
     // row_start_[r - first_row + 1] counts the edges of row r, then becomes
     // the prefix sum after the edges from above: where row r's edges go.
-    first_row = std::min(first_row, last_row);
     row_start_.assign(std::size_t(last_row - first_row) + 2, 0);
     row_start_[0] = std::uint32_t(keys_.size());
     for (const Edge& e : list)
         if (int(e.y0) >= top) ++row_start_[std::size_t(int(e.y0) - first_row) + 1];
     for (std::size_t r = 1; r < row_start_.size(); ++r) row_start_[r] += row_start_[r - 1];
-    const auto active = [&](const Edge& e) -> Active {
+    const auto to_active = [&](const Edge& e) -> Active {
         return {e.x0 - float(x0_), e.y0, e.y1, (e.x1 - e.x0) / (e.y1 - e.y0), e.dir};
     };
     sorted_.resize(list.size());
     for (std::size_t k = 0; k < keys_.size(); ++k)
-        sorted_[k] = active(list[std::uint32_t(keys_[k])]);
+        sorted_[k] = to_active(list[std::uint32_t(keys_[k])]);
     for (const Edge& e : list)
-        if (int(e.y0) >= top) sorted_[row_start_[std::size_t(int(e.y0) - first_row)]++] = active(e);
+        if (int(e.y0) >= top)
+            sorted_[row_start_[std::size_t(int(e.y0) - first_row)]++] = to_active(e);
 }
 
 void Rasterizer::fill(const EdgeList& edges, FillRule rule, bool antialias, SpanSink& sink) {
