@@ -7,6 +7,36 @@
 
 namespace casteljau {
 
+namespace {
+
+// The units of work the threads take in turn: whole bands, then the last
+// `halved` bands in two halves each. The threads end apart by up to the
+// last unit one of them took, more when a core runs slower for a while
+// (15-25% on a shared machine); halving the last units halves that wait.
+// A half repeats the flattening of the shapes crossing its middle, so only
+// the last units are halved. In order, the units cover each row once.
+class BandUnits {
+  public:
+    struct Unit {
+        int band, y0, y1; ///< the band whose node list it draws, and its rows
+    };
+    BandUnits(int bands, int halved, int height)
+        : whole_(bands - std::min(bands, halved)), bands_(bands), height_(height) {}
+    int count() const { return whole_ + 2 * (bands_ - whole_); }
+    Unit at(int u) const {
+        if (u < whole_) return {u, u * kBandRows, std::min(height_, (u + 1) * kBandRows)};
+        const int band = whole_ + (u - whole_) / 2;
+        const int y0 = band * kBandRows, y1 = std::min(height_, y0 + kBandRows);
+        const int mid = (y0 + y1) / 2;
+        return (u - whole_) % 2 == 0 ? Unit{band, y0, mid} : Unit{band, mid, y1};
+    }
+
+  private:
+    int whole_, bands_, height_;
+};
+
+} // namespace
+
 void BandRenderer::sort_into_bands(const Scene& scene, const Affine& view, int height, int bands) {
     if (int(band_nodes_.size()) < bands) band_nodes_.resize(std::size_t(bands));
     for (int b = 0; b < bands; ++b) band_nodes_[std::size_t(b)].clear();
@@ -39,15 +69,17 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
     // band canvas is a view of the band's rows of the frame (the rows of
     // different bands are disjoint, and a band's rows are contiguous).
     sort_into_bands(scene, view, h, bands);
+    const BandUnits units{bands, n > 1 ? n : 0, h};
     std::atomic<int> next{0};
     const auto work = [&](int t) {
         Canvas& band = bands_[std::size_t(t)];
         RenderStats& total = stats_[std::size_t(t)];
-        for (int b = next++; b < bands; b = next++) {
-            const int y0 = b * kBandRows, y1 = std::min(h, y0 + kBandRows);
-            band.view_rows(canvas, y0, y1 - y0, background);
-            total += renderers_[std::size_t(t)]->render_nodes(band_nodes_[std::size_t(b)], view,
-                                                              band, options, frame);
+        for (int u = next++; u < units.count(); u = next++) {
+            const BandUnits::Unit unit = units.at(u);
+            if (unit.y0 == unit.y1) continue; // the empty half of a one-row band
+            band.view_rows(canvas, unit.y0, unit.y1 - unit.y0, background);
+            total += renderers_[std::size_t(t)]->render_nodes(band_nodes_[std::size_t(unit.band)],
+                                                              view, band, options, frame);
             band.settle();
         }
     };

@@ -1,7 +1,9 @@
 // Rendering in horizontal bands, on one thread or several.
 //
 // The frame is cut into bands of kBandRows rows, which the threads take one
-// at a time as they finish the last. A thread renders the whole scene into
+// at a time as they finish the last; on several threads, the last bands
+// (one per thread) are taken in halves, so that a thread slowed down near
+// the end keeps the others waiting for at most half a band. A thread renders the whole scene into
 // each of its bands with its own Renderer, in place (the band canvas is a
 // view of the frame's rows, Canvas::view_rows, whose rows are cleared to the
 // background as they are first written, and settled when the band is done).
