@@ -6,6 +6,7 @@
 #include "casteljau/raster/path_edges.h"
 #include "casteljau/raster/rasterizer.h"
 #include "casteljau/render/bands.h"
+#include "casteljau/render/worker_pool.h"
 #include "casteljau/svg/reader.h"
 
 #include <atomic>
@@ -13,7 +14,6 @@
 #include <chrono>
 #include <cstdint>
 #include <cstring>
-#include <thread>
 #include <vector>
 
 namespace casteljau {
@@ -54,8 +54,8 @@ void BM_DenseScene(benchmark::State& state) {
 BENCHMARK(BM_DenseScene)->Arg(1)->Arg(0)->ArgName("antialias")->Unit(benchmark::kMillisecond);
 
 // The machine's own scaling, as references for the renderer's: the same
-// sharing out (6 units taken from a shared counter by 1 or 2 threads started
-// for the frame), of work that shares no data, so on an idle machine with
+// sharing out (6 units taken from a shared counter by 1 or 2 threads of a
+// WorkerPool, as BandRenderer's), of work that shares no data, so on an idle machine with
 // private cores two threads take half the time; what they lose, the machine
 // takes. Two kinds of unit, each lasting about as long as one of the dense
 // scene's bands (2-4 ms on the machine of bench/README.md):
@@ -67,7 +67,7 @@ BENCHMARK(BM_DenseScene)->Arg(1)->Arg(0)->ArgName("antialias")->Unit(benchmark::
 //   on the last so that no compiler can shorten the chain.
 enum class Work { Memory, Compute };
 
-void reference_frame(Work kind, int threads) {
+void reference_frame(Work kind, int threads, WorkerPool& pool) {
     constexpr int kUnits = 6, kPasses = 80;
     constexpr long kSteps = 1L << 21;
     static std::vector<float> buffers[2] = {std::vector<float>(128 * 1024 * 4, 1.0f),
@@ -87,10 +87,7 @@ void reference_frame(Work kind, int threads) {
         benchmark::DoNotOptimize(b.data());
         benchmark::DoNotOptimize(x);
     };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
-    work(0);
-    for (std::thread& th : pool) th.join();
+    pool.run(threads, work);
 }
 
 // The scaling ratio measured frame against frame: every iteration renders the
@@ -102,6 +99,7 @@ void reference_frame(Work kind, int threads) {
 void BM_ThreadScaling(benchmark::State& state) {
     static const Scene scene = load(CASTELJAU_EXAMPLES "/svg/dense.svg");
     BandRenderer renderer;
+    WorkerPool pool;
     Canvas canvas(int(scene.width), int(scene.height));
     double one = 0, two = 0;
     double ref[2][2] = {}; // [memory, compute][1 thread, 2 threads]
@@ -118,7 +116,7 @@ void BM_ThreadScaling(benchmark::State& state) {
         for (Work kind : {Work::Memory, Work::Compute})
             for (int threads : {1, 2}) {
                 const auto r0 = Clock::now();
-                reference_frame(kind, threads);
+                reference_frame(kind, threads, pool);
                 ref[int(kind)][threads - 1] += ms(Clock::now() - r0);
             }
         one += ms(t1 - t0), two += ms(t2 - t1);

@@ -3,6 +3,7 @@
 // edge"). Global operator new is replaced in this file to count; the count is
 // read only around the frames measured here.
 #include "casteljau/render/bands.h"
+#include "casteljau/render/worker_pool.h"
 #include "casteljau/svg/reader.h"
 
 #include <atomic>
@@ -35,7 +36,10 @@ long allocations_of_second_frame(const char* file) {
     EXPECT_TRUE(doc.scene) << doc.error;
     if (!doc.scene) return -1;
     // Bands on one thread: the renderers, the band views and the stats are
-    // all kept (more threads start a std::thread per frame, which allocates).
+    // all kept. On more threads the pool's threads are kept too (below), but
+    // which thread draws which band changes from frame to frame, and a
+    // thread's renderer grows its buffers the first time it draws a band
+    // heavier than any before: steady, but not from the second frame.
     BandRenderer r;
     Canvas canvas(int(doc.scene->width), int(doc.scene->height));
     r.render(*doc.scene, Affine::identity(), canvas, {}, {}, 1);
@@ -48,6 +52,19 @@ TEST(SteadyState, ASecondFrameAllocatesNothing) {
     for (const char* file : {"dense.svg", "curves.svg", "holes.svg", "stars.svg", "strokes.svg",
                              "transforms.svg", "gradients.svg", "opacity.svg"})
         EXPECT_EQ(allocations_of_second_frame(file), 0) << file;
+}
+
+// The pool's threads wait between runs: a run after the first, on no more
+// threads, starts none and allocates nothing.
+TEST(SteadyState, AWorkerPoolRunAllocatesNothing) {
+    WorkerPool pool;
+    std::atomic<int> calls = 0;
+    const auto job = [&](int) { ++calls; };
+    pool.run(3, job);
+    const long before = g_allocations;
+    for (int n : {3, 1, 2, 3}) pool.run(n, job);
+    EXPECT_EQ(g_allocations - before, 0);
+    EXPECT_EQ(calls, 12);
 }
 
 } // namespace

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <thread>
 
 namespace casteljau {
 
@@ -83,11 +82,11 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
             band.settle();
         }
     };
-    // The calling thread is worker 0: n - 1 threads are started per frame.
-    std::vector<std::thread> pool;
-    for (int t = 1; t < n; ++t) pool.emplace_back(work, t);
-    work(0);
-    for (std::thread& th : pool) th.join();
+    if (n > 1 && !pool_) pool_ = std::make_unique<WorkerPool>();
+    if (n > 1)
+        pool_->run(n, work); // the calling thread is worker 0
+    else
+        work(0);
     RenderStats total;
     for (const RenderStats& s : stats_) total += s;
     return total;

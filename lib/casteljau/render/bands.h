@@ -3,7 +3,8 @@
 // The frame is cut into bands of kBandRows rows, which the threads take one
 // at a time as they finish the last; on several threads, the last bands
 // (one per thread) are taken in halves, so that a thread slowed down near
-// the end keeps the others waiting for at most half a band. A thread renders the whole scene into
+// the end keeps the others waiting for at most half a band. The threads
+// are a WorkerPool's, kept from frame to frame. A thread renders the whole scene into
 // each of its bands with its own Renderer, in place (the band canvas is a
 // view of the frame's rows, Canvas::view_rows, whose rows are cleared to the
 // background as they are first written, and settled when the band is done).
@@ -22,6 +23,7 @@
 #pragma once
 
 #include "casteljau/render/renderer.h"
+#include "casteljau/render/worker_pool.h"
 
 #include <memory>
 #include <vector>
@@ -48,7 +50,8 @@ class BandRenderer {
     std::vector<std::unique_ptr<Renderer>> renderers_;
     std::vector<std::vector<const Node*>> band_nodes_; ///< per band, kept between frames
     std::vector<Canvas> bands_;
-    std::vector<RenderStats> stats_; ///< per thread, kept between frames
+    std::vector<RenderStats> stats_;   ///< per thread, kept between frames
+    std::unique_ptr<WorkerPool> pool_; ///< made on the first frame on several threads
 };
 
 } // namespace casteljau
