@@ -82,11 +82,12 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
             band.settle();
         }
     };
-    if (n > 1 && !pool_) pool_ = std::make_unique<WorkerPool>();
-    if (n > 1)
-        pool_->run(n, work); // the calling thread is worker 0
-    else
+    if (n == 1) {
         work(0);
+    } else {
+        if (!pool_) pool_ = std::make_unique<WorkerPool>();
+        pool_->run(n, work); // the calling thread is worker 0
+    }
     RenderStats total;
     for (const RenderStats& s : stats_) total += s;
     return total;

@@ -3,18 +3,17 @@
 // The frame is cut into bands of kBandRows rows, which the threads take one
 // at a time as they finish the last; on several threads, the last bands
 // (one per thread) are taken in halves, so that a thread slowed down near
-// the end keeps the others waiting for at most half a band. The threads
-// are a WorkerPool's, kept from frame to frame. A thread renders the whole scene into
-// each of its bands with its own Renderer, in place (the band canvas is a
-// view of the frame's rows, Canvas::view_rows, whose rows are cleared to the
-// background as they are first written, and settled when the band is done).
-// Bands pay even on one
-// thread: a band (kBandRows x width x 16 bytes) stays in cache while every
-// shape crossing it is composited, where a whole float frame would not
-// (measured in bench/render). Edge geometry is always clipped to the frame,
-// never to a band (see EdgeList), and every pixel is composited by the same
-// shapes in the same order, so the result is bit-identical to one thread
-// (tested).
+// the end keeps the others waiting for at most half a band. The threads are
+// a WorkerPool's, kept from frame to frame. A thread renders the whole scene
+// into each of its bands with its own Renderer, in place (the band canvas is
+// a view of the frame's rows, Canvas::view_rows, whose rows are cleared to
+// the background as they are first written, and settled when the band is
+// done). Bands pay even on one thread: a band (kBandRows x width x 16 bytes)
+// stays in cache while every shape crossing it is composited, where a whole
+// float frame would not (measured in bench/render). Edge geometry is always
+// clipped to the frame, never to a band (see EdgeList), and every pixel is
+// composited by the same shapes in the same order, so the result is
+// bit-identical to one thread (tested).
 // Flattening is repeated per band for shapes that cross several bands; pieces
 // wholly outside a band are culled before flattening. The scene's top-level
 // nodes are sorted into the bands they reach once per frame

@@ -34,14 +34,17 @@ class WorkerPool {
     /// pool's; returns when all have returned. `job` is called as `job(int)`.
     template <class Job>
     void run(int n, const Job& job) {
-        run(
-            n, [](const void* j, int t) { (*static_cast<const Job*>(j))(t); }, &job);
+        run(n, &call_job<Job>, &job);
     }
 
   private:
     // Type-erased by hand: a std::function of a lambda with several captures
     // would allocate on every frame.
     using Call = void (*)(const void* job, int part);
+    template <class Job>
+    static void call_job(const void* job, int part) {
+        (*static_cast<const Job*>(job))(part);
+    }
     void run(int n, Call call, const void* job);
     /// The loop of the thread that runs part `part` of each job.
     void serve(int part, std::uint64_t seen);
