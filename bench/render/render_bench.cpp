@@ -55,9 +55,9 @@ BENCHMARK(BM_DenseScene)->Arg(1)->Arg(0)->ArgName("antialias")->Unit(benchmark::
 
 // The machine's own scaling, as references for the renderer's: the same
 // sharing out (6 units taken from a shared counter by 1 or 2 threads of a
-// WorkerPool, as BandRenderer's), of work that shares no data, so on an idle machine with
-// private cores two threads take half the time; what they lose, the machine
-// takes. Two kinds of unit, each lasting about as long as one of the dense
+// WorkerPool, as BandRenderer's), of work that shares no data, so on an idle
+// machine with private cores two threads take half the time; what they
+// lose, the machine takes. Two kinds of unit, each lasting about as long as one of the dense
 // scene's bands (2-4 ms on the machine of bench/README.md):
 // - memory: 80 read-modify-write passes over a private buffer the size of a
 //   band's pixels (128 rows of 1024 float RGBA pixels, 2 MiB). More memory-

@@ -132,11 +132,12 @@ TEST(Render, BandsAreBitIdenticalToOneThread) {
             o.antialias = aa;
             a.reset(w, h); // transparent, as the bands clear it
             Renderer().render(*doc.scene, Affine::scale(1.5), a, o);
+            b.fill({1, 0, 1, 1}); // no band may leave a row unvisited
             one.render(*doc.scene, Affine::scale(1.5), b, o, {0, 0, 0, 0}, 1);
             EXPECT_EQ(testing::differing_rows(a, b), 0)
                 << file << ": bands against one whole frame, aa " << aa;
             for (int threads : {2, 3, 7}) {
-                b.fill({1, 0, 1, 1}); // no band may leave a row unvisited
+                b.fill({1, 0, 1, 1});
                 many.render(*doc.scene, Affine::scale(1.5), b, o, {0, 0, 0, 0}, threads);
                 EXPECT_EQ(testing::differing_rows(a, b), 0)
                     << file << " with " << threads << " threads, aa " << aa;

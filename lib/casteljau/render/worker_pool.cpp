@@ -11,7 +11,7 @@ WorkerPool::~WorkerPool() {
     for (std::thread& t : threads_) t.join();
 }
 
-void WorkerPool::run(int n, Call call, const void* job) {
+void WorkerPool::run_erased(int n, Call call, const void* job) {
     if (n > 1) {
         {
             const std::lock_guard lock(mutex_);

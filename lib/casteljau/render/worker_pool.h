@@ -34,7 +34,7 @@ class WorkerPool {
     /// pool's; returns when all have returned. `job` is called as `job(int)`.
     template <class Job>
     void run(int n, const Job& job) {
-        run(n, &call_job<Job>, &job);
+        run_erased(n, &call_job<Job>, &job);
     }
 
   private:
@@ -45,7 +45,7 @@ class WorkerPool {
     static void call_job(const void* job, int part) {
         (*static_cast<const Job*>(job))(part);
     }
-    void run(int n, Call call, const void* job);
+    void run_erased(int n, Call call, const void* job);
     /// The loop of the thread that runs part `part` of each job.
     void serve(int part, std::uint64_t seen);
 
