@@ -1,7 +1,8 @@
 // Frame times of whole renders (flatten + raster + composite; no parse, no
 // encode): the bundled dense scene (examples/svg/dense.svg, 3000 shapes at
 // 1024 x 768) and a full-canvas rectangle, whose pixels/s are compared with a
-// memset of the same buffer (the bandwidth limit) in the same run.
+// memset of the same buffer (the bandwidth limit) in the same run. Each on
+// both canvases: float (Canvas, 16 bytes a pixel) and 8-bit (Canvas8, 4).
 #include "casteljau/curve/path_data.h"
 #include "casteljau/raster/path_edges.h"
 #include "casteljau/raster/rasterizer.h"
@@ -28,6 +29,7 @@ Scene load(const std::string& path) {
     return std::move(*r.scene);
 }
 
+template <class Canvas>
 void render_frames(benchmark::State& state, const Scene& scene, bool antialias) {
     BandRenderer renderer;
     Canvas canvas;
@@ -47,11 +49,21 @@ void render_frames(benchmark::State& state, const Scene& scene, bool antialias) 
     state.counters["segments"] = double(segments);
 }
 
+template <class Canvas>
 void BM_DenseScene(benchmark::State& state) {
     static const Scene scene = load(CASTELJAU_EXAMPLES "/svg/dense.svg");
-    render_frames(state, scene, state.range(0) != 0);
+    render_frames<Canvas>(state, scene, state.range(0) != 0);
 }
-BENCHMARK(BM_DenseScene)->Arg(1)->Arg(0)->ArgName("antialias")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_DenseScene, Canvas)
+    ->Arg(1)
+    ->Arg(0)
+    ->ArgName("antialias")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_DenseScene, Canvas8)
+    ->Arg(1)
+    ->Arg(0)
+    ->ArgName("antialias")
+    ->Unit(benchmark::kMillisecond);
 
 // The machine's own scaling, as references for the renderer's: the same
 // sharing out (6 units taken from a shared counter by 1 or 2 threads of a
@@ -96,6 +108,7 @@ void reference_frame(Work kind, int threads, WorkerPool& pool) {
 // and runs the machine references (reference_frame) on 1 and on 2 threads.
 // Counters: one_thread_ms, two_threads_ms, speedup (their ratio), and the
 // references' ratios in the same iterations: memory_speedup, compute_speedup.
+template <class Canvas>
 void BM_ThreadScaling(benchmark::State& state) {
     static const Scene scene = load(CASTELJAU_EXAMPLES "/svg/dense.svg");
     BandRenderer renderer;
@@ -129,8 +142,10 @@ void BM_ThreadScaling(benchmark::State& state) {
     state.counters["memory_speedup"] = ref[0][0] / ref[0][1];
     state.counters["compute_speedup"] = ref[1][0] / ref[1][1];
 }
-BENCHMARK(BM_ThreadScaling)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_ThreadScaling, Canvas)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_ThreadScaling, Canvas8)->UseManualTime()->Unit(benchmark::kMillisecond);
 
+template <class Canvas>
 void BM_FullCanvasFill(benchmark::State& state) {
     static const Scene scene = [] {
         SvgResult r = parse_svg(
@@ -138,27 +153,39 @@ void BM_FullCanvasFill(benchmark::State& state) {
             "full.svg");
         return std::move(*r.scene);
     }();
-    render_frames(state, scene, true);
+    render_frames<Canvas>(state, scene, true);
 }
-BENCHMARK(BM_FullCanvasFill)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_FullCanvasFill, Canvas)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_FullCanvasFill, Canvas8)->Unit(benchmark::kMillisecond);
 
-// The reference: a memset of the same 2048 x 2048 float RGBA buffer, to zero
-// bytes and to a non-zero byte. The fill must write non-zero data, and some
-// machines write zeros at a multiple of the bandwidth of anything else (on
-// the 2-core AMD EPYC VM of bench/README.md, memset to 0 ran 2.5x faster than
-// memset to 0x5a, and than any store loop we tried: SSE2, AVX2 and AVX-512
-// streaming stores, rep stosq), so the non-zero one is the bandwidth limit.
+// The reference: a memset of the same 2048 x 2048 buffer (64 MiB of float
+// RGBA, 16 MiB of 8-bit), to zero bytes and to a non-zero byte. The fill
+// must write non-zero data, and some machines write zeros to memory at a
+// multiple of the bandwidth of anything else (on the 2-core AMD EPYC VM of
+// bench/README.md, a 64 MiB memset to 0 ran 2.5x faster than to 0x5a, and
+// than any store loop we tried: SSE2, AVX2 and AVX-512 streaming stores,
+// rep stosq; at 16 MiB, within the last-level cache, the two are equal).
+template <class Pixel>
 void BM_MemsetSameBuffer(benchmark::State& state) {
-    std::vector<Premul> buf(std::size_t(2048) * 2048);
+    std::vector<Pixel> buf(std::size_t(2048) * 2048);
     const int byte = int(state.range(0));
     for (auto _ : state) {
-        std::memset(static_cast<void*>(buf.data()), byte, buf.size() * sizeof(Premul));
+        std::memset(static_cast<void*>(buf.data()), byte, buf.size() * sizeof(Pixel));
         benchmark::DoNotOptimize(buf.data());
     }
     state.counters["Mpixels_per_s"] =
         benchmark::Counter(2048.0 * 2048 * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK(BM_MemsetSameBuffer)->Arg(0)->Arg(0x5a)->ArgName("byte")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_MemsetSameBuffer, Premul)
+    ->Arg(0)
+    ->Arg(0x5a)
+    ->ArgName("byte")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_MemsetSameBuffer, Premul8)
+    ->Arg(0)
+    ->Arg(0x5a)
+    ->ArgName("byte")
+    ->Unit(benchmark::kMillisecond);
 
 // The rasterizer alone (edges -> spans, no canvas) on a 24 px circle placed
 // in a 64 px frame and in a 16384 px frame: the cost follows the outline and

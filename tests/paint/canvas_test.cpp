@@ -1,5 +1,5 @@
-// The canvas: a band view's lazy clear, and the store paths of
-// composite_span, against plain per-pixel source-over.
+// The canvas, in both pixel formats: a band view's lazy clear, and the store
+// paths of composite_span, against plain per-pixel source-over.
 #include "casteljau/paint/canvas.h"
 #include "corpus.h"
 
@@ -9,13 +9,20 @@ namespace casteljau {
 namespace {
 
 bool same(Premul a, Premul b) { return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a; }
+bool same(Premul8 a, Premul8 b) { return a == b; }
+
+template <class Canvas>
+class CanvasFormats : public ::testing::Test {};
+using Formats = ::testing::Types<Canvas, Canvas8>;
+TYPED_TEST_SUITE(CanvasFormats, Formats);
 
 // Random spans (solid and per-pixel, opaque and translucent, some wide
 // enough for streamed stores) on band views: after settle() every pixel
 // equals source-over onto a canvas cleared eagerly.
-TEST(Canvas, LazilyClearedBandsEqualEagerClearing) {
+TYPED_TEST(CanvasFormats, LazilyClearedBandsEqualEagerClearing) {
+    using Canvas = TypeParam;
     testing::Rng rng(91);
-    const int w = 2600, h = 40;
+    const int w = 4400, h = 40; // spans of 4096 8-bit pixels (16 KB) are streamed
     const Premul background{0.1f, 0.2f, 0.3f, 1.0f};
     Canvas frame(w, h), band;
     for (int trial = 0; trial < 20; ++trial) {
@@ -28,8 +35,11 @@ TEST(Canvas, LazilyClearedBandsEqualEagerClearing) {
             band.view_rows(frame, y0, rows, background);
             for (int k = 0; k < 12; ++k) {
                 const int y = rng.integer(0, rows - 1);
-                const int x = rng.integer(0, w - 1);
-                const int len = rng.integer(1, w - x);
+                // A quarter nearly whole rows, streamed when opaque, with
+                // unaligned starts and ends.
+                const bool wide = rng.uniform(0, 1) < 0.25;
+                const int x = wide ? rng.integer(0, 7) : rng.integer(0, w - 1);
+                const int len = wide ? w - x - rng.integer(0, 7) : rng.integer(1, w - x);
                 const bool opaque = rng.uniform(0, 1) < 0.6;
                 const Premul c = premultiply({float(rng.uniform(0, 1)), 0.5f, 0.25f, 1.0f},
                                              opaque ? 1.0f : 0.5f);
@@ -39,7 +49,7 @@ TEST(Canvas, LazilyClearedBandsEqualEagerClearing) {
                     s.coverage = cov.data();
                 }
                 band.composite_span(s, c);
-                Premul* d = eager.row(y0 + y) + x;
+                auto* d = eager.row(y0 + y) + x;
                 for (int i = 0; i < len; ++i) blend_over(d[i], c, s.at(i));
             }
             band.settle();
@@ -53,19 +63,20 @@ TEST(Canvas, LazilyClearedBandsEqualEagerClearing) {
 
 // Coverage 0 leaves a pixel's bits as they are, whatever the color and the
 // pixel (the dense sweep sends invisible columns between visible ones as 0).
-TEST(Canvas, ZeroCoverageLeavesPixelsBitForBit) {
+TYPED_TEST(CanvasFormats, ZeroCoverageLeavesPixelsBitForBit) {
+    using Pixel = typename TypeParam::pixel_type;
     testing::Rng rng(92);
     const int w = 64;
-    Canvas canvas(w, 1);
+    TypeParam canvas(w, 1);
     std::vector<float> cov(w);
     for (int trial = 0; trial < 200; ++trial) {
-        Premul* row = canvas.row(0);
+        Pixel* row = canvas.row(0);
         for (int x = 0; x < w; ++x) {
             const float a = float(rng.uniform(0, 1));
-            row[x] = {a * float(rng.uniform(0, 1)), a * float(rng.uniform(0, 1)),
-                      a * float(rng.uniform(0, 1)), a};
+            row[x] = pixel_of<Pixel>({a * float(rng.uniform(0, 1)), a * float(rng.uniform(0, 1)),
+                                      a * float(rng.uniform(0, 1)), a});
         }
-        const std::vector<Premul> before(row, row + w);
+        const std::vector<Pixel> before(row, row + w);
         for (int x = 0; x < w; ++x) cov[std::size_t(x)] = x % 3 == 0 ? 0.0f : 1.0f;
         const Premul c = premultiply(
             {float(rng.uniform(0, 1)), float(rng.uniform(0, 1)), float(rng.uniform(0, 1)), 1.0f},

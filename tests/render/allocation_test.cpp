@@ -31,6 +31,7 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 namespace casteljau {
 namespace {
 
+template <class Canvas>
 long allocations_of_second_frame(const char* file) {
     const SvgResult doc = read_svg_file(std::string(CASTELJAU_EXAMPLES "/svg/") + file);
     EXPECT_TRUE(doc.scene) << doc.error;
@@ -50,8 +51,10 @@ long allocations_of_second_frame(const char* file) {
 
 TEST(SteadyState, ASecondFrameAllocatesNothing) {
     for (const char* file : {"dense.svg", "curves.svg", "holes.svg", "stars.svg", "strokes.svg",
-                             "transforms.svg", "gradients.svg", "opacity.svg"})
-        EXPECT_EQ(allocations_of_second_frame(file), 0) << file;
+                             "transforms.svg", "gradients.svg", "opacity.svg"}) {
+        EXPECT_EQ(allocations_of_second_frame<Canvas>(file), 0) << file << ", float";
+        EXPECT_EQ(allocations_of_second_frame<Canvas8>(file), 0) << file << ", 8-bit";
+    }
 }
 
 // The pool's threads wait between runs: a run after the first, on no more

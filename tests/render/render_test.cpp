@@ -3,9 +3,14 @@
 #include "casteljau/render/bands.h"
 #include "casteljau/render/renderer.h"
 #include "casteljau/svg/reader.h"
+#include "corpus.h"
 #include "pixels.h"
 
+#include <cmath>
+#include <cstdio>
 #include <gtest/gtest.h>
+#include <string>
+#include <vector>
 
 namespace casteljau {
 namespace {
@@ -119,14 +124,19 @@ TEST(Render, NonUniformScalingStretchesTheStroke) {
 // a band leaves out only the nodes that do not reach it; on scenes with
 // layers and with shapes crossing band borders, for band counts that do not
 // divide the height, and with the last bands taken in halves.
-TEST(Render, BandsAreBitIdenticalToOneThread) {
+template <class Canvas>
+class RenderFormats : public ::testing::Test {};
+using CanvasFormats = ::testing::Types<Canvas, Canvas8>;
+TYPED_TEST_SUITE(RenderFormats, CanvasFormats);
+
+TYPED_TEST(RenderFormats, BandsAreBitIdenticalToOneThread) {
     for (const char* file :
          {"dense.svg", "opacity.svg", "holes.svg", "transforms.svg", "strokes.svg"}) {
         const SvgResult doc = read_svg_file(std::string(CASTELJAU_EXAMPLES "/svg/") + file);
         ASSERT_TRUE(doc.scene) << doc.error;
         const int w = int(doc.scene->width * 1.5), h = int(doc.scene->height * 1.5);
         BandRenderer one, many;
-        Canvas a(w, h), b(w, h);
+        TypeParam a(w, h), b(w, h);
         for (bool aa : {true, false}) {
             RenderOptions o;
             o.antialias = aa;
@@ -144,6 +154,72 @@ TEST(Render, BandsAreBitIdenticalToOneThread) {
             }
         }
     }
+}
+
+// A render onto a Canvas8 is the float render rounded composite by
+// composite: each rounds once, to within half a step (paint/pixel8.h), and a
+// step's error is carried on scaled by at most 1, so a pixel is within half
+// a step per composite reaching it (a fill, a stroke, a group's layer) of
+// 255 times the float pixel. Rounding to nearest is also unbiased: the mean
+// signed error over the covered pixels is near 0 (truncating would pull it
+// towards -1/2 a composite).
+TEST(Render, Canvas8IsTheFloatRenderRoundedPerComposite) {
+    testing::Rng rng(77);
+    constexpr int kSize = 96, kDiscs = 12, kGrouped = 4; // the last kGrouped are in a group
+    struct Disc {
+        double x, y, reach;
+    };
+    std::vector<Disc> discs;
+    std::string svg = "<svg xmlns='http://www.w3.org/2000/svg' width='96' height='96'>";
+    const auto hex = [&] {
+        char b[8];
+        std::snprintf(b, sizeof b, "#%02x%02x%02x", rng.integer(0, 255), rng.integer(0, 255),
+                      rng.integer(0, 255));
+        return std::string(b);
+    };
+    for (int i = 0; i < kDiscs; ++i) {
+        if (i == kDiscs - kGrouped) svg += "<g opacity='0.6'>";
+        const double x = rng.uniform(10, 86), y = rng.uniform(10, 86), r = rng.uniform(4, 30);
+        const double sw = rng.uniform(0.5, 6);
+        discs.push_back({x, y, r + sw / 2 + 1.5});
+        svg += "<circle cx='" + std::to_string(x) + "' cy='" + std::to_string(y) + "' r='" +
+               std::to_string(r) + "' fill='" + hex() + "' fill-opacity='" +
+               std::to_string(rng.uniform(0.2, 1)) + "' stroke='" + hex() + "' stroke-width='" +
+               std::to_string(sw) + "' stroke-opacity='" + std::to_string(rng.uniform(0.2, 1)) +
+               "'/>";
+    }
+    svg += "</g></svg>";
+    const SvgResult doc = parse_svg(svg, "discs.svg");
+    ASSERT_TRUE(doc.scene) << doc.error;
+    Canvas exact(kSize, kSize);
+    Canvas8 bytes(kSize, kSize);
+    Renderer().render(*doc.scene, Affine::identity(), exact, {});
+    Renderer().render(*doc.scene, Affine::identity(), bytes, {});
+    double signed_sum = 0;
+    long covered = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            int composites = 0;
+            bool in_group = false;
+            for (int i = 0; i < kDiscs; ++i) {
+                const Disc& d = discs[std::size_t(i)];
+                if (std::hypot(x + 0.5 - d.x, y + 0.5 - d.y) > d.reach) continue;
+                composites += 2; // fill and stroke
+                in_group |= i >= kDiscs - kGrouped;
+            }
+            composites += in_group; // the layer onto the canvas
+            const Premul8 got = bytes.row(y)[x];
+            const Premul want = exact.row(y)[x];
+            const float errors[4] = {got.r - 255 * want.r, got.g - 255 * want.g,
+                                     got.b - 255 * want.b, got.a - 255 * want.a};
+            for (float e : errors) {
+                ASSERT_LE(std::fabs(e), 0.5 * composites + 1e-3)
+                    << "at " << x << "," << y << " after " << composites << " composites";
+                if (composites > 0) signed_sum += e, ++covered;
+            }
+        }
+    ASSERT_GT(covered, 4 * kSize * kSize / 2);
+    EXPECT_LT(std::fabs(signed_sum / double(covered)), 0.1) << "the rounding is biased";
 }
 
 // Stage times cost clock reads per shape, so they are read only on request.

@@ -18,7 +18,8 @@ float srgb_to_linear(float v) {
 
 } // namespace
 
-std::string write_canvas_atomic(const std::string& path, const Canvas& canvas) {
+template <class Pixel>
+std::string write_canvas_atomic(const std::string& path, const BasicCanvas<Pixel>& canvas) {
     std::string ext = std::filesystem::path(path).extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return std::tolower(c); });
@@ -26,10 +27,10 @@ std::string write_canvas_atomic(const std::string& path, const Canvas& canvas) {
     const int w = canvas.width(), h = canvas.height();
     std::vector<float> out(std::size_t(w) * std::size_t(h) * 4);
     for (int y = 0; y < h; ++y) {
-        const Premul* src = canvas.row(y);
+        const Pixel* src = canvas.row(y);
         float* dst = &out[std::size_t(y) * std::size_t(w) * 4];
         for (int x = 0; x < w; ++x, dst += 4) {
-            Premul p = src[x];
+            Premul p = to_premul(src[x]);
             if (jpeg) { // over white
                 const float k = 1.0f - p.a;
                 p = {p.r + k, p.g + k, p.b + k, 1.0f};
@@ -44,5 +45,8 @@ std::string write_canvas_atomic(const std::string& path, const Canvas& canvas) {
     }
     return write_image_atomic(path, {w, h, out});
 }
+
+template std::string write_canvas_atomic(const std::string&, const Canvas&);
+template std::string write_canvas_atomic(const std::string&, const Canvas8&);
 
 } // namespace casteljau

@@ -13,6 +13,8 @@
 
 namespace casteljau {
 
-std::string write_canvas_atomic(const std::string& path, const Canvas& canvas);
+/// Writes a Canvas or a Canvas8; an error message, or empty on success.
+template <class Pixel>
+std::string write_canvas_atomic(const std::string& path, const BasicCanvas<Pixel>& canvas);
 
 } // namespace casteljau

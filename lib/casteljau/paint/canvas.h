@@ -1,4 +1,4 @@
-// Canvas: premultiplied RGBA pixels in float, and source-over compositing.
+// Canvas: premultiplied RGBA pixels, and source-over compositing.
 //
 // Source-over (Porter & Duff 1984) with coverage c and premultiplied source S:
 //   D' = c S + (1 - c S.a) D,
@@ -7,15 +7,21 @@
 // into a layer the size of the group's bounds and composites it once, with
 // the group's opacity as the coverage (SVG 1.1, 14.5).
 //
-// Float keeps layers and partial coverage free of 8-bit rounding; a pixel is
-// 16 bytes, which is what the image-size limits of the readers account for.
+// Two pixel formats, one code: `Canvas` stores float (16 bytes a pixel),
+// which keeps layers and partial coverage free of 8-bit rounding and is what
+// the image-size limits of the readers account for; `Canvas8` stores 8 bits
+// a channel (4 bytes, paint/pixel8.h), as Cairo and Skia draw, for a caller
+// that wants bytes (a window, an 8-bit file) and a quarter of the memory
+// traffic. Colors reach both as float `Premul`; only the stores differ.
 #pragma once
 
 #include "casteljau/paint/color.h"
 #include "casteljau/paint/gradient.h"
+#include "casteljau/paint/pixel8.h"
 #include "casteljau/raster/span.h"
 
 #include <algorithm>
+#include <type_traits>
 #include <vector>
 
 namespace casteljau {
@@ -29,12 +35,27 @@ inline void blend_over(Premul& d, Premul s, float k) {
     d.a = k * s.a + inv * d.a;
 }
 
-/// A premultiplied float RGBA image, or an offscreen layer placed in its parent.
-class Canvas {
+/// The float color a float pixel holds: itself.
+inline const Premul& to_premul(const Premul& p) { return p; }
+
+/// A color as a pixel of the given format.
+template <class Pixel>
+Pixel pixel_of(const Premul& c) {
+    if constexpr (std::is_same_v<Pixel, Premul>)
+        return c;
+    else
+        return quantize(c);
+}
+
+/// A premultiplied RGBA image with pixels of type `Pixel` (Premul or
+/// Premul8), or an offscreen layer placed in its parent.
+template <class Pixel>
+class BasicCanvas {
   public:
-    Canvas() = default;
+    using pixel_type = Pixel; ///< Premul or Premul8
+    BasicCanvas() = default;
     /// Transparent, with its top-left corner at (ox, oy) of the parent canvas.
-    Canvas(int width, int height, int ox = 0, int oy = 0);
+    BasicCanvas(int width, int height, int ox = 0, int oy = 0);
     /// Resizes (keeping storage when large enough) and clears to `clear`.
     void reset(int width, int height, int ox = 0, int oy = 0, Premul clear = {});
     /// Makes this canvas a view of `rows` whole rows of `parent` from row y0
@@ -44,7 +65,7 @@ class Canvas {
     /// the clear and the drawing meet in the cache, and a row whose first
     /// write is an opaque run is cleared only around it. settle() clears the
     /// rows never written; call it before reading the pixels.
-    void view_rows(Canvas& parent, int y0, int rows, Premul clear);
+    void view_rows(BasicCanvas& parent, int y0, int rows, Premul clear);
     /// Clears the rows of a view_rows band that nothing has written yet.
     void settle();
 
@@ -57,10 +78,10 @@ class Canvas {
     /// Row of the parent (or frame) where this canvas starts.
     int origin_y() const { return oy_; }
     /// The pixels of row y (0 <= y < height()), for writing.
-    Premul* row(int y) { return row_except(y, 0, 0); }
+    Pixel* row(int y) { return row_except(y, 0, 0); }
     /// The pixels of row y (0 <= y < height()), read-only; for a view_rows
     /// band, only after settle() (an unwritten row is not cleared before).
-    const Premul* row(int y) const { return pixels() + std::size_t(y) * std::size_t(w_); }
+    const Pixel* row(int y) const { return pixels() + std::size_t(y) * std::size_t(w_); }
 
     /// Sets every pixel to `color`.
     void fill(Premul color);
@@ -76,7 +97,7 @@ class Canvas {
     }
     /// Source-over of a layer (placed at its origin, relative to this canvas's
     /// origin), scaled by `opacity`; the parts outside this canvas are dropped.
-    void composite_layer(const Canvas& layer, float opacity);
+    void composite_layer(const BasicCanvas& layer, float opacity);
 
   private:
     /// composite_span at row y, column x of this canvas; `s` gives the
@@ -86,30 +107,39 @@ class Canvas {
     void store_span(int y, int x, int len, const Premul& c);
     /// Row y for writing; a row still awaiting its clear is cleared first,
     /// except for the columns [x0, x1), which the caller overwrites.
-    Premul* row_except(int y, int x0, int x1) {
-        Premul* r = pixels() + std::size_t(y) * std::size_t(w_);
+    Pixel* row_except(int y, int x0, int x1) {
+        Pixel* r = pixels() + std::size_t(y) * std::size_t(w_);
         if (!stale_.empty() && stale_[std::size_t(y)]) clear_row_except(r, y, x0, x1);
         return r;
     }
-    void clear_row_except(Premul* r, int y, int x0, int x1);
-    Premul* pixels() { return view_ ? view_ : px_.data(); }
-    const Premul* pixels() const { return view_ ? view_ : px_.data(); }
-    std::vector<Premul> px_;
-    Premul* view_ = nullptr;           // another canvas's rows (view_rows), else null
+    void clear_row_except(Pixel* r, int y, int x0, int x1);
+    Pixel* pixels() { return view_ ? view_ : px_.data(); }
+    const Pixel* pixels() const { return view_ ? view_ : px_.data(); }
+    std::vector<Pixel> px_;
+    Pixel* view_ = nullptr;            // another canvas's rows (view_rows), else null
     std::vector<unsigned char> stale_; // view_rows: per row, 1 until cleared or written
-    Premul clear_{};                   // what stale rows are cleared to
+    Pixel clear_{};                    // what stale rows are cleared to
     int w_ = 0, h_ = 0, ox_ = 0, oy_ = 0;
 };
 
+/// Float pixels: exact compositing, and the format of layers and EXR output.
+using Canvas = BasicCanvas<Premul>;
+/// 8-bit pixels: a quarter of the memory, each composite rounded to 1/255.
+using Canvas8 = BasicCanvas<Premul8>;
+
+extern template class BasicCanvas<Premul>;
+extern template class BasicCanvas<Premul8>;
+
 // Inline, into the painters: called once per span, and a thin shape's spans
 // are a few pixels (2% of the hairline scene's frame as a call).
-inline void Canvas::composite_at(int y, int x, const Span& s, const Premul& c) {
+template <class Pixel>
+inline void BasicCanvas<Pixel>::composite_at(int y, int x, const Span& s, const Premul& c) {
     const float* k = s.coverage;
     if (!k && c.a == 1.0f && s.solid == 1.0f) { // opaque over the whole span: a store
         store_span(y, x, s.len, c);
         return;
     }
-    Premul* d = row(y) + x;
+    Pixel* d = row(y) + x;
     // A shape's span on the next row usually starts near this one (outlines
     // are continuous), and rows are a stride apart that no hardware
     // prefetcher follows: ask for that pixel's line now.
@@ -127,20 +157,22 @@ inline void Canvas::composite_at(int y, int x, const Span& s, const Premul& c) {
     }
     // Opaque: where fully covered the source replaces the pixel (the general
     // formula gives the same bits, at the price of a read), run by run.
+    const Pixel p = pixel_of<Pixel>(c);
     for (int i = 0; i < s.len;) {
         int j = i;
         while (j < s.len && k[j] == 1.0f) ++j;
-        std::fill(d + i, d + j, c);
+        std::fill(d + i, d + j, p);
         for (i = j; i < s.len && k[i] != 1.0f; ++i) blend_over(d[i], c, k[i]);
     }
 }
 
 /// Adapts the raster's span interface (absolute pixel coordinates) to
 /// solid-color compositing on a canvas placed at its origin.
+template <class Pixel>
 class SolidSpanPainter final : public SpanSink {
   public:
     /// Paints `color` onto `c`.
-    SolidSpanPainter(Canvas& c, Premul color) : canvas_(c), color_(color) {}
+    SolidSpanPainter(BasicCanvas<Pixel>& c, Premul color) : canvas_(c), color_(color) {}
     /// Source-over of the color through the span's coverage.
     /// Not through a new Span with the origin subtracted: GCC computes its y
     /// and x as a pair, with one 8-byte load of the two fields the sweep has
@@ -149,24 +181,26 @@ class SolidSpanPainter final : public SpanSink {
     void span(const Span& s) override { canvas_.composite_frame_span(s, color_); }
 
   private:
-    Canvas& canvas_;
+    BasicCanvas<Pixel>& canvas_;
     Premul color_;
 };
 
 /// Adapts the span interface to gradient compositing: each pixel's color comes
 /// from the shader at the pixel's centre.
+template <class Pixel>
 class GradientSpanPainter final : public SpanSink {
   public:
     /// Paints the gradient `shader` onto `c`.
-    GradientSpanPainter(Canvas& c, const GradientShader& shader) : canvas_(c), shader_(shader) {}
+    GradientSpanPainter(BasicCanvas<Pixel>& c, const GradientShader& shader)
+        : canvas_(c), shader_(shader) {}
     /// Source-over of the shaded pixels through the span's coverage.
     void span(const Span& s) override {
-        Premul* d = canvas_.row(s.y - canvas_.origin_y()) + (s.x - canvas_.origin_x());
+        Pixel* d = canvas_.row(s.y - canvas_.origin_y()) + (s.x - canvas_.origin_x());
         for (int i = 0; i < s.len; ++i) blend_over(d[i], shader_.at(s.x + i, s.y), s.at(i));
     }
 
   private:
-    Canvas& canvas_;
+    BasicCanvas<Pixel>& canvas_;
     const GradientShader& shader_;
 };
 

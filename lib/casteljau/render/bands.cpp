@@ -53,13 +53,15 @@ void BandRenderer::sort_into_bands(const Scene& scene, const Affine& view, int h
     }
 }
 
-RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas& canvas,
+template <class Pixel>
+RenderStats BandRenderer::render(const Scene& scene, const Affine& view, BasicCanvas<Pixel>& canvas,
                                  const RenderOptions& options, Premul background, int threads) {
     const int w = canvas.width(), h = canvas.height();
     const int bands = std::max(1, (h + kBandRows - 1) / kBandRows);
     const int n = std::clamp(threads, 1, bands);
     while (int(renderers_.size()) < n) renderers_.push_back(std::make_unique<Renderer>());
-    bands_.resize(std::size_t(n));
+    auto& views = std::get<std::vector<BasicCanvas<Pixel>>>(bands_);
+    views.resize(std::size_t(n));
     const PixelRect frame{0, 0, w, h};
     stats_.assign(std::size_t(n), RenderStats{});
     // Each thread takes the next band not yet taken, so a thread that drew
@@ -71,7 +73,7 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
     const BandUnits units{bands, n > 1 ? n : 0, h};
     std::atomic<int> next{0};
     const auto work = [&](int t) {
-        Canvas& band = bands_[std::size_t(t)];
+        BasicCanvas<Pixel>& band = views[std::size_t(t)];
         RenderStats& total = stats_[std::size_t(t)];
         for (int u = next++; u < units.count(); u = next++) {
             const BandUnits::Unit unit = units.at(u);
@@ -92,5 +94,10 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, Canvas&
     for (const RenderStats& s : stats_) total += s;
     return total;
 }
+
+template RenderStats BandRenderer::render(const Scene&, const Affine&, Canvas&,
+                                          const RenderOptions&, Premul, int);
+template RenderStats BandRenderer::render(const Scene&, const Affine&, Canvas8&,
+                                          const RenderOptions&, Premul, int);
 
 } // namespace casteljau

@@ -8,9 +8,9 @@
 // into each of its bands with its own Renderer, in place (the band canvas is
 // a view of the frame's rows, Canvas::view_rows, whose rows are cleared to
 // the background as they are first written, and settled when the band is
-// done). Bands pay even on one thread: a band (kBandRows x width x 16 bytes)
-// stays in cache while every shape crossing it is composited, where a whole
-// float frame would not (measured in bench/render). Edge geometry is always
+// done). Bands pay even on one thread: a band (kBandRows x width x 16 bytes
+// of float, 4 of Canvas8) stays in cache while every shape crossing it is
+// composited, where a whole frame would not (measured in bench/render). Edge geometry is always
 // clipped to the frame, never to a band (see EdgeList), and every pixel is
 // composited by the same shapes in the same order, so the result is
 // bit-identical to one thread (tested).
@@ -25,6 +25,7 @@
 #include "casteljau/render/worker_pool.h"
 
 #include <memory>
+#include <tuple>
 #include <vector>
 
 namespace casteljau {
@@ -37,9 +38,11 @@ static_assert(kBandRows % kStrokeStripRows == 0, "a band is whole stroke strips"
 /// Renders a frame in horizontal bands, on one thread or several, bit-identically.
 class BandRenderer {
   public:
-    /// Clears `canvas` (origin 0, 0) to `background` and renders `scene` into it.
-    /// The stats add up the bands' times (CPU time, not wall time) and counts.
-    RenderStats render(const Scene& scene, const Affine& view, Canvas& canvas,
+    /// Clears `canvas` (origin 0, 0; a Canvas or a Canvas8) to `background`
+    /// and renders `scene` into it. The stats add up the bands' times (CPU
+    /// time, not wall time) and counts.
+    template <class Pixel>
+    RenderStats render(const Scene& scene, const Affine& view, BasicCanvas<Pixel>& canvas,
                        const RenderOptions& options, Premul background, int threads);
 
   private:
@@ -47,8 +50,8 @@ class BandRenderer {
     void sort_into_bands(const Scene& scene, const Affine& view, int height, int bands);
 
     std::vector<std::unique_ptr<Renderer>> renderers_;
-    std::vector<std::vector<const Node*>> band_nodes_; ///< per band, kept between frames
-    std::vector<Canvas> bands_;
+    std::vector<std::vector<const Node*>> band_nodes_;            ///< per band, kept between frames
+    std::tuple<std::vector<Canvas>, std::vector<Canvas8>> bands_; ///< per thread, per format
     std::vector<RenderStats> stats_;   ///< per thread, kept between frames
     std::unique_ptr<WorkerPool> pool_; ///< made on the first frame on several threads
 };

@@ -62,22 +62,25 @@ RenderStats& RenderStats::operator+=(const RenderStats& o) {
     return *this;
 }
 
-RenderStats Renderer::render(const Scene& scene, const Affine& view, Canvas& canvas,
+template <class Pixel>
+RenderStats Renderer::render(const Scene& scene, const Affine& view, BasicCanvas<Pixel>& canvas,
                              const RenderOptions& options) {
     const int x0 = canvas.origin_x(), y0 = canvas.origin_y();
     return render(scene, view, canvas, options,
                   {x0, y0, x0 + canvas.width(), y0 + canvas.height()});
 }
 
-RenderStats Renderer::render(const Scene& scene, const Affine& view, Canvas& canvas,
+template <class Pixel>
+RenderStats Renderer::render(const Scene& scene, const Affine& view, BasicCanvas<Pixel>& canvas,
                              const RenderOptions& options, const PixelRect& frame) {
     begin(view, options, frame);
     draw_group(scene.root, canvas, 0);
     return stats_;
 }
 
+template <class Pixel>
 RenderStats Renderer::render_nodes(std::span<const Node* const> nodes, const Affine& view,
-                                   Canvas& canvas, const RenderOptions& options,
+                                   BasicCanvas<Pixel>& canvas, const RenderOptions& options,
                                    const PixelRect& frame) {
     begin(view, options, frame);
     for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -113,22 +116,26 @@ Rect Renderer::node_reach_box(const Node& n, const Affine& view) {
     return united_over_shapes(n, [&](const Shape& s) { return reach_box(s, view); });
 }
 
-Canvas& Renderer::layer(int depth) {
-    while (int(layers_.size()) <= depth) layers_.push_back(std::make_unique<Canvas>());
-    return *layers_[std::size_t(depth)];
+template <class Target>
+Target& Renderer::layer(int depth) {
+    auto& layers = std::get<std::vector<std::unique_ptr<Target>>>(layers_);
+    while (int(layers.size()) <= depth) layers.push_back(std::make_unique<Target>());
+    return *layers[std::size_t(depth)];
 }
 
-void Renderer::draw_group(const Group& g, Canvas& target, int depth) {
+template <class Target>
+void Renderer::draw_group(const Group& g, Target& target, int depth) {
     for (const Node& n : g.children) draw_node(n, target, depth);
 }
 
-void Renderer::draw_node(const Node& n, Canvas& target, int depth) {
+template <class Target>
+void Renderer::draw_node(const Node& n, Target& target, int depth) {
     if (const Shape* s = std::get_if<Shape>(&n.item)) {
         // Opacity on a shape with both fill and stroke applies to the two
         // together (SVG 1.1, 14.5): a layer, or the stroke would show the
         // fill through it. With one paint, scaling its alpha is the same.
         if (s->opacity < 1.0f && s->fill && s->stroke)
-            in_layer(n, target, depth, s->opacity, [&](Canvas& l) { draw_shape(*s, l, 1.0f); });
+            in_layer(n, target, depth, s->opacity, [&](Target& l) { draw_shape(*s, l, 1.0f); });
         else
             draw_shape(*s, target, s->opacity);
         return;
@@ -138,11 +145,11 @@ void Renderer::draw_node(const Node& n, Canvas& target, int depth) {
         draw_group(child, target, depth);
     else
         in_layer(n, target, depth, child.opacity,
-                 [&](Canvas& l) { draw_group(child, l, depth + 1); });
+                 [&](Target& l) { draw_group(child, l, depth + 1); });
 }
 
-template <class Draw>
-void Renderer::in_layer(const Node& n, Canvas& target, int depth, float opacity, Draw draw) {
+template <class Target, class Draw>
+void Renderer::in_layer(const Node& n, Target& target, int depth, float opacity, Draw draw) {
     if (opacity <= 0.0f) return;
     // The layer covers the node's bounds (one pixel of margin for
     // antialiasing), clipped to the target.
@@ -153,7 +160,7 @@ void Renderer::in_layer(const Node& n, Canvas& target, int depth, float opacity,
     const int x0 = floor_in(b.x0 - 1, tx0, tx1), y0 = floor_in(b.y0 - 1, ty0, ty1);
     const int x1 = ceil_in(b.x1 + 1, tx0, tx1), y1 = ceil_in(b.y1 + 1, ty0, ty1);
     if (x1 <= x0 || y1 <= y0) return;
-    Canvas& l = layer(depth);
+    Target& l = layer<Target>(depth);
     l.reset(x1 - x0, y1 - y0, x0, y0);
     draw(l);
     const auto t = stage_start(*options_);
@@ -161,7 +168,8 @@ void Renderer::in_layer(const Node& n, Canvas& target, int depth, float opacity,
     add_stage_ms(stats_.raster_ms, *options_, t);
 }
 
-void Renderer::draw_shape(const Shape& s, Canvas& target, float opacity) {
+template <class Target>
+void Renderer::draw_shape(const Shape& s, Target& target, float opacity) {
     if (opacity <= 0.0f || (!s.fill && !s.stroke)) return;
     const Affine m = view_ * s.transform;
     // A shape wholly outside the target draws nothing there. Left of it too:
@@ -190,7 +198,8 @@ void Renderer::draw_shape(const Shape& s, Canvas& target, float opacity) {
     if (s.stroke) draw_stroke(s, m, target, opacity);
 }
 
-void Renderer::draw_stroke(const Shape& s, const Affine& m, Canvas& target, float opacity) {
+template <class Target>
+void Renderer::draw_stroke(const Shape& s, const Affine& m, Target& target, float opacity) {
     const Stroke& st = *s.stroke;
     // Hairlines: a stroke narrower than one device pixel is drawn one pixel
     // wide with its opacity scaled by its width, so it keeps its total
@@ -249,8 +258,9 @@ double Renderer::stroke_reach(const Shape& s, const Affine& m) {
                              std::max(st.geometry.miter_limit, std::sqrt(2.0)) * m.max_scale());
 }
 
+template <class Target>
 void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float opacity,
-                     FillRule rule, Canvas& target) {
+                     FillRule rule, Target& target) {
     const auto t = stage_start(*options_);
     // Spans are cut to the target's columns (the edges are the frame's),
     // unless the target has all of the frame's columns (a band).
@@ -276,17 +286,29 @@ void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float
         }
         if (gradient_shader_.prepare(*gradient, to_device * gradient->transform, opacity,
                                      options_->linear_light_gradients)) {
-            GradientSpanPainter painter(target, gradient_shader_);
+            GradientSpanPainter painter{target, gradient_shader_};
             fill_through(painter);
         }
     } else {
         const Premul c = premultiply(color, opacity);
         if (c.a > 0.0f) {
-            SolidSpanPainter painter(target, c);
+            SolidSpanPainter painter{target, c};
             fill_through(painter);
         }
     }
     add_stage_ms(stats_.raster_ms, *options_, t);
 }
+
+// The two pixel formats a renderer draws onto.
+template RenderStats Renderer::render(const Scene&, const Affine&, Canvas&, const RenderOptions&);
+template RenderStats Renderer::render(const Scene&, const Affine&, Canvas8&, const RenderOptions&);
+template RenderStats Renderer::render(const Scene&, const Affine&, Canvas&, const RenderOptions&,
+                                      const PixelRect&);
+template RenderStats Renderer::render(const Scene&, const Affine&, Canvas8&, const RenderOptions&,
+                                      const PixelRect&);
+template RenderStats Renderer::render_nodes(std::span<const Node* const>, const Affine&, Canvas&,
+                                            const RenderOptions&, const PixelRect&);
+template RenderStats Renderer::render_nodes(std::span<const Node* const>, const Affine&, Canvas8&,
+                                            const RenderOptions&, const PixelRect&);
 
 } // namespace casteljau

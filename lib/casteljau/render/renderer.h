@@ -1,4 +1,4 @@
-// Renderer: a Scene onto a Canvas. Shape by shape: edges (flatten + clip,
+// Renderer: a Scene onto a Canvas or a Canvas8. Shape by shape: edges (flatten + clip,
 // raster/path_edges.h) -> coverage spans (raster/rasterizer.h) -> source-over
 // compositing (paint/canvas.h); groups with opacity go through an offscreen
 // layer limited to the group's bounds. The renderer keeps its edge list,
@@ -16,6 +16,7 @@
 
 #include <memory>
 #include <span>
+#include <tuple>
 #include <vector>
 
 namespace casteljau {
@@ -44,24 +45,29 @@ struct RenderStats {
     RenderStats& operator+=(const RenderStats& o);
 };
 
-/// Draws a Scene onto a Canvas, keeping its buffers between shapes and frames.
+/// Draws a Scene onto a canvas of either pixel format (Canvas, Canvas8),
+/// keeping its buffers between shapes and frames.
 class Renderer {
   public:
-    /// Draws `scene` onto `canvas`, mapping scene device space by `view`
-    /// (e.g. a scale to the output size). `frame` is the whole image in pixels
-    /// when `canvas` is one band of it (its origin tells where); edges are
-    /// clipped to the frame's rows so that bands match the whole bit for bit.
-    RenderStats render(const Scene& scene, const Affine& view, Canvas& canvas,
+    /// Draws `scene` onto all of `canvas` (the canvas is the frame), mapping
+    /// scene device space by `view` (e.g. a scale to the output size).
+    template <class Pixel>
+    RenderStats render(const Scene& scene, const Affine& view, BasicCanvas<Pixel>& canvas,
                        const RenderOptions& options);
-    /// Draws `scene` onto all of `canvas` (the canvas is the frame).
-    RenderStats render(const Scene& scene, const Affine& view, Canvas& canvas,
+    /// The same where `frame` is the whole image in pixels and `canvas` one
+    /// band of it (its origin tells where); edges are clipped to the frame's
+    /// rows so that bands match the whole bit for bit.
+    template <class Pixel>
+    RenderStats render(const Scene& scene, const Affine& view, BasicCanvas<Pixel>& canvas,
                        const RenderOptions& options, const PixelRect& frame);
     /// Draws only the given nodes, in order, as render() would draw them as the
     /// root's children: for a caller that culls with its own index (see
     /// Drawing). `canvas` may be any tile of `frame`, and gets exactly the
     /// pixels a render of the whole frame gives there.
-    RenderStats render_nodes(std::span<const Node* const> nodes, const Affine& view, Canvas& canvas,
-                             const RenderOptions& options, const PixelRect& frame);
+    template <class Pixel>
+    RenderStats render_nodes(std::span<const Node* const> nodes, const Affine& view,
+                             BasicCanvas<Pixel>& canvas, const RenderOptions& options,
+                             const PixelRect& frame);
 
     /// The device box (under `view`) outside which a shape changes no pixel:
     /// its control box mapped, grown by the stroke's reach.
@@ -75,24 +81,32 @@ class Renderer {
 
   private:
     void begin(const Affine& view, const RenderOptions& options, const PixelRect& frame);
-    void draw_group(const Group& g, Canvas& target, int depth);
-    void draw_node(const Node& n, Canvas& target, int depth);
-    void draw_shape(const Shape& s, Canvas& target, float opacity);
+    template <class Target>
+    void draw_group(const Group& g, Target& target, int depth);
+    template <class Target>
+    void draw_node(const Node& n, Target& target, int depth);
+    template <class Target>
+    void draw_shape(const Shape& s, Target& target, float opacity);
     /// Draws into an offscreen layer over the node's bounds, composited with `opacity`.
-    template <class Draw>
-    void in_layer(const Node& n, Canvas& target, int depth, float opacity, Draw draw);
-    void draw_stroke(const Shape& s, const Affine& m, Canvas& target, float opacity);
+    template <class Target, class Draw>
+    void in_layer(const Node& n, Target& target, int depth, float opacity, Draw draw);
+    template <class Target>
+    void draw_stroke(const Shape& s, const Affine& m, Target& target, float opacity);
     /// Composites the current edge list with a solid color or a gradient.
+    template <class Target>
     void paint(const Shape& s, Rgba color, const Gradient* gradient, float opacity, FillRule rule,
-               Canvas& target);
-    Canvas& layer(int depth);
+               Target& target);
+    /// The layer of nesting depth `depth`, in the target's pixel format.
+    template <class Target>
+    Target& layer(int depth);
 
     EdgeList edges_;
     Rasterizer raster_;
-    GradientShader gradient_shader_;              ///< its color table is reused across shapes
-    Stroker stroker_;                             ///< stroke outlines, buffers reused across shapes
-    StrokeGeometry hairline_geometry_;            ///< a hairline's widened copy of its geometry
-    std::vector<std::unique_ptr<Canvas>> layers_; ///< one per group nesting depth
+    GradientShader gradient_shader_;   ///< its color table is reused across shapes
+    Stroker stroker_;                  ///< stroke outlines, buffers reused across shapes
+    StrokeGeometry hairline_geometry_; ///< a hairline's widened copy of its geometry
+    /// One layer per group nesting depth, per pixel format.
+    std::tuple<std::vector<std::unique_ptr<Canvas>>, std::vector<std::unique_ptr<Canvas8>>> layers_;
     Affine view_;
     PixelRect frame_;
     const RenderOptions* options_ = nullptr;

@@ -1,0 +1,86 @@
+// 8-bit pixels: each composite is the float result rounded once, to nearest.
+#include "casteljau/paint/canvas.h"
+#include "corpus.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+namespace casteljau {
+namespace {
+
+float channel(const Premul8& p, int i) {
+    return float(i == 0 ? p.r : i == 1 ? p.g : i == 2 ? p.b : p.a);
+}
+float channel(const Premul& p, int i) { return i == 0 ? p.r : i == 1 ? p.g : i == 2 ? p.b : p.a; }
+
+Premul random_premul(testing::Rng& rng) {
+    const float a = rng.uniform(0, 1) < 0.3 ? 1.0f : float(rng.uniform(0, 1));
+    return {a * float(rng.uniform(0, 1)), a * float(rng.uniform(0, 1)),
+            a * float(rng.uniform(0, 1)), a};
+}
+
+// Every byte value survives the trip to float and back.
+TEST(Pixel8, EveryByteRoundTrips) {
+    for (int v = 0; v < 256; ++v) {
+        const auto b = std::uint8_t(v);
+        const Premul8 p{b, b, b, b};
+        EXPECT_EQ(quantize(to_premul(p)), p) << v;
+    }
+}
+
+// quantize is the nearest byte: at most half a step from 255 v, and clamped.
+TEST(Pixel8, QuantizeIsTheNearestByte) {
+    testing::Rng rng(81);
+    for (int trial = 0; trial < 20000; ++trial) {
+        const Premul c = random_premul(rng);
+        const Premul8 q = quantize(c);
+        for (int i = 0; i < 4; ++i)
+            ASSERT_LE(std::fabs(channel(q, i) - 255.0f * channel(c, i)), 0.5f + 1e-4f)
+                << "trial " << trial << " channel " << i << " value " << channel(c, i);
+    }
+    EXPECT_EQ(quantize({-0.5f, 2.0f, 0.0f, 1.5f}), (Premul8{0, 255, 0, 255}));
+}
+
+// Source-over onto bytes is within half a step of the float formula applied
+// to the same starting pixel: one rounding, to nearest (truncating would be
+// up to a whole step off, and biased).
+TEST(Pixel8, BlendIsTheFloatBlendRoundedOnce) {
+    testing::Rng rng(82);
+    double signed_sum = 0;
+    long n = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+        const Premul8 start = quantize(random_premul(rng));
+        const Premul s = random_premul(rng);
+        const float k = rng.uniform(0, 1) < 0.2 ? 1.0f : float(rng.uniform(0, 1));
+        Premul exact = to_premul(start);
+        blend_over(exact, s, k);
+        Premul8 d = start;
+        blend_over(d, s, k);
+        for (int i = 0; i < 4; ++i) {
+            const float err = channel(d, i) - 255.0f * channel(exact, i);
+            ASSERT_LE(std::fabs(err), 0.5f + 1e-3f)
+                << "trial " << trial << " channel " << i << " k " << k << " start "
+                << channel(start, i) << " source " << channel(s, i);
+            signed_sum += err, ++n;
+        }
+    }
+    EXPECT_LT(std::fabs(signed_sum / double(n)), 0.02) << "rounding is biased";
+}
+
+// Coverage 0 leaves the bytes; full coverage of an opaque color stores it.
+TEST(Pixel8, CoverageZeroKeepsAndOpaqueFullCoverageReplaces) {
+    testing::Rng rng(83);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const Premul8 start = quantize(random_premul(rng));
+        Premul s = random_premul(rng);
+        Premul8 d = start;
+        blend_over(d, s, 0.0f);
+        ASSERT_EQ(d, start) << "trial " << trial;
+        s = premultiply({s.r, s.g, s.b, 1.0f});
+        blend_over(d, s, 1.0f);
+        ASSERT_EQ(d, quantize(s)) << "trial " << trial;
+    }
+}
+
+} // namespace
+} // namespace casteljau
