@@ -2,11 +2,12 @@
 //
 // Each iteration renders the frame with both, one thread each, timed
 // separately: Casteljau's BandRenderer at its default 0.25 px tolerance into
-// its float canvas, and Cairo (cairo_scene.h) at its default 0.1 px into an
-// ARGB32 image surface, both cleared to white first. The reported time is
-// Casteljau's; the counters give Cairo's time and the ratio
-// casteljau / cairo (below 1: Casteljau is faster). A second run of each
-// scene with Casteljau at 0.1 px compares them at equal tolerance.
+// its float canvas (`float`) or its 8-bit one (`u8`, Cairo's pixel size),
+// and Cairo (cairo_scene.h) at its default 0.1 px into an ARGB32 image
+// surface, both cleared to white first. The reported time is Casteljau's;
+// the counters give Cairo's time and the ratio casteljau / cairo (below 1:
+// Casteljau is faster). A second run of each scene with Casteljau at 0.1 px
+// compares them at equal tolerance.
 // diff_255 is the mean difference of the two pictures per channel, in
 // 1/255: a check that both drew the same thing at comparable quality.
 //
@@ -23,6 +24,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <type_traits>
 
 namespace casteljau::bench {
 namespace {
@@ -35,6 +37,7 @@ double seconds_since(Clock::time_point t) {
 
 // Mean absolute difference of the two frames' color channels, in 1/255:
 // the check that both drew the same picture (premultiplied, over white).
+template <class Canvas>
 double mean_difference(const Canvas& ours, cairo_surface_t* surface) {
     const unsigned char* data = cairo_image_surface_get_data(surface);
     const int stride = cairo_image_surface_get_stride(surface);
@@ -42,7 +45,7 @@ double mean_difference(const Canvas& ours, cairo_surface_t* surface) {
     for (int y = 0; y < ours.height(); ++y) {
         const auto* px = reinterpret_cast<const std::uint32_t*>(data + std::ptrdiff_t(y) * stride);
         for (int x = 0; x < ours.width(); ++x) {
-            const Premul p = ours.row(y)[x];
+            const Premul p = to_premul(ours.row(y)[x]);
             const std::uint32_t c = px[x]; // ARGB32: 0xAARRGGBB, premultiplied
             sum += std::fabs(p.r * 255 - float((c >> 16) & 255)) +
                    std::fabs(p.g * 255 - float((c >> 8) & 255)) +
@@ -52,6 +55,7 @@ double mean_difference(const Canvas& ours, cairo_surface_t* surface) {
     return sum / (3.0 * ours.width() * ours.height());
 }
 
+template <class Canvas>
 void compare(benchmark::State& state, const Scene& scene, double tolerance) {
     const int w = int(scene.width), h = int(scene.height);
     BandRenderer ours;
@@ -83,14 +87,21 @@ void compare(benchmark::State& state, const Scene& scene, double tolerance) {
     cairo_surface_destroy(surface);
 }
 
-void register_scene(const std::string& name, std::shared_ptr<const Scene> scene) {
+template <class Canvas>
+void register_scene(const std::string& name, const std::shared_ptr<const Scene>& scene) {
+    const std::string format = std::is_same_v<Canvas, Canvas8> ? "/u8" : "/float";
     for (double tol : {0.25, 0.1}) {
-        const std::string label = name + (tol == 0.25 ? "/tol:0.25" : "/tol:0.1");
-        benchmark::RegisterBenchmark(label.c_str(),
-                                     [scene, tol](benchmark::State& s) { compare(s, *scene, tol); })
+        const std::string label = name + format + (tol == 0.25 ? "/tol:0.25" : "/tol:0.1");
+        benchmark::RegisterBenchmark(
+            label.c_str(), [scene, tol](benchmark::State& s) { compare<Canvas>(s, *scene, tol); })
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
     }
+}
+
+void register_scene(const std::string& name, std::shared_ptr<const Scene> scene) {
+    register_scene<Canvas>(name, scene);
+    register_scene<Canvas8>(name, scene);
 }
 
 } // namespace

@@ -20,13 +20,19 @@ expect exclusive 2 'excludes' render "$data/ok.svg" -o "$tmp/x.png" --width 10 -
 # --stats: the fields of the contract, medians over --repeat. The stage
 # times are measured (a nonzero digit): the renderer reads its stage clocks
 # only when asked (RenderOptions::time_stages).
-expect stats 0 '"segments_in": [0-9]+, "segments_out": [0-9]+, "max_error_px": [0-9.e-]+, "parse_ms": [0-9.e-]+, "flatten_ms": [0-9.]*[1-9][0-9.e-]*, "raster_ms": [0-9.]*[1-9][0-9.e-]*, "encode_ms": [0-9.e-]+, "frame_ms": [0-9.e-]+, "total_ms": [0-9.e-]+, "width": 40, "height": 30, "threads": [0-9]+, "repeat": 5' \
+expect stats 0 '"segments_in": [0-9]+, "segments_out": [0-9]+, "max_error_px": [0-9.e-]+, "parse_ms": [0-9.e-]+, "flatten_ms": [0-9.]*[1-9][0-9.e-]*, "raster_ms": [0-9.]*[1-9][0-9.e-]*, "encode_ms": [0-9.e-]+, "frame_ms": [0-9.e-]+, "total_ms": [0-9.e-]+, "width": 40, "height": 30, "threads": [0-9]+, "pixels": "float", "repeat": 5' \
     render "$data/ok.svg" -o "$tmp/s.png" --stats - --repeat 5
 # Threads: the same image bytes and the same counts as one thread.
 "$bin" render "$data/../../../examples/svg/opacity.svg" -o "$tmp/t1.png" --threads 1 --stats "$tmp/t1.json" 2>/dev/null
 "$bin" render "$data/../../../examples/svg/opacity.svg" -o "$tmp/t3.png" --threads 3 --stats "$tmp/t3.json" 2>/dev/null
 cmp -s "$tmp/t1.png" "$tmp/t3.png" && pass || fail "threads: images differ"
 [[ "$(grep -o '"segments_out": [0-9]*' "$tmp/t1.json")" == "$(grep -o '"segments_out": [0-9]*' "$tmp/t3.json")" ]] && pass || fail "threads: counts differ"
+# 8-bit pixels: the same bytes on any number of threads; an unknown format is refused.
+"$bin" render "$data/../../../examples/svg/opacity.svg" -o "$tmp/u1.png" --pixels u8 --threads 1 2>/dev/null
+"$bin" render "$data/../../../examples/svg/opacity.svg" -o "$tmp/u3.png" --pixels u8 --threads 3 2>/dev/null
+[[ -s "$tmp/u1.png" ]] && cmp -s "$tmp/u1.png" "$tmp/u3.png" && pass || fail "u8 threads: images differ"
+expect pixels_u8_stats 0 '"pixels": "u8"' render "$data/ok.svg" -o "$tmp/u.png" --pixels u8 --stats -
+expect pixels_bad 2 'pixels' render "$data/ok.svg" -o "$tmp/x.png" --pixels u16
 expect stats_file 0 '' render "$data/ok.svg" -o "$tmp/s.png" --stats "$tmp/stats.json"
 grep -q '"frame_ms"' "$tmp/stats.json" && pass || fail "stats file"
 expect aliased 0 '' render "$data/ok.svg" -o "$tmp/a.png" --antialias off --background '#fff'

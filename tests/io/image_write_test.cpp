@@ -1,9 +1,11 @@
+#include "casteljau/io/canvas_write.h"
 #include "casteljau/io/image_write.h"
 
 #include <OpenImageIO/imageio.h>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <iterator>
 #include <vector>
 
 namespace casteljau {
@@ -51,6 +53,34 @@ TEST(ImageWrite, RoundTripsPngAndExrAndLeavesNoTemporaryFile) {
     }
     for (const auto& e : fs::directory_iterator(dir.path))
         EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
+// A Canvas8 is written as the float canvas holding the same values: the
+// same file, byte for byte, in an 8-bit and a float format.
+TEST(ImageWrite, ACanvas8WritesAsTheFloatCanvasOfItsValues) {
+    TempDir dir;
+    const int w = 23, h = 7;
+    Canvas8 bytes(w, h);
+    Canvas floats(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const auto a = std::uint8_t((x * 37 + y * 11) % 256);
+            const Premul8 p{std::uint8_t(a * x / w), std::uint8_t(a * y / h), std::uint8_t(a / 2),
+                            a};
+            bytes.row(y)[x] = p;
+            floats.row(y)[x] = to_premul(p);
+        }
+    for (const char* ext : {".png", ".exr"}) {
+        const std::string a = (dir.path / (std::string("u8") + ext)).string();
+        const std::string b = (dir.path / (std::string("f") + ext)).string();
+        ASSERT_EQ(write_canvas_atomic(a, bytes), "");
+        ASSERT_EQ(write_canvas_atomic(b, floats), "");
+        std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
+        const std::string ca{std::istreambuf_iterator<char>(fa), {}};
+        const std::string cb{std::istreambuf_iterator<char>(fb), {}};
+        EXPECT_FALSE(ca.empty()) << ext;
+        EXPECT_EQ(ca, cb) << ext;
+    }
 }
 
 TEST(ImageWrite, FailuresLeaveAnExistingFileIntact) {
