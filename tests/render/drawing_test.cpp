@@ -76,12 +76,17 @@ Shape random_shape(Rng& rng, double extent) {
     return s;
 }
 
-TEST(PartialRender, RedrawingTheDamageAfterEditsEqualsAFullRender) {
+template <class Canvas>
+class PartialRenderFormats : public ::testing::Test {};
+using CanvasFormats = ::testing::Types<Canvas, Canvas8>;
+TYPED_TEST_SUITE(PartialRenderFormats, CanvasFormats);
+
+TYPED_TEST(PartialRenderFormats, RedrawingTheDamageAfterEditsEqualsAFullRender) {
     Rng rng(12);
     const int w = 300, h = 280; // two and a bit bands of 128 rows
     Drawing drawing(w, h);
     for (int i = 0; i < 150; ++i) drawing.add(random_shape(rng, w));
-    Canvas edited(w, h), reference(w, h);
+    TypeParam edited(w, h), reference(w, h);
     drawing.render(edited, kBackground);
     for (int edit = 0; edit < 40; ++edit) {
         const Drawing::ShapeId id = std::size_t(rng.integer(0, int(drawing.size()) - 1));

@@ -106,13 +106,15 @@ std::vector<Drawing::ShapeId> Drawing::shapes_in(const Rect& r) const {
     return hits;
 }
 
-RenderStats Drawing::render(Canvas& canvas, Premul background, const RenderOptions& options,
-                            int threads) {
+template <class Pixel>
+RenderStats Drawing::render(BasicCanvas<Pixel>& canvas, Premul background,
+                            const RenderOptions& options, int threads) {
     return bands_.render(scene_, Affine::identity(), canvas, options, background, threads);
 }
 
-RenderStats Drawing::render_region(Canvas& canvas, const PixelRect& dirty, Premul background,
-                                   const RenderOptions& options) {
+template <class Pixel>
+RenderStats Drawing::render_region(BasicCanvas<Pixel>& canvas, const PixelRect& dirty,
+                                   Premul background, const RenderOptions& options) {
     const PixelRect r{std::max(dirty.x0, 0), std::max(dirty.y0, 0), std::min(dirty.x1, width_),
                       std::min(dirty.y1, height_)};
     if (r.width() <= 0 || r.height() <= 0) return {};
@@ -122,14 +124,22 @@ RenderStats Drawing::render_region(Canvas& canvas, const PixelRect& dirty, Premu
         if (b.x1 > r.x0 && b.x0 < r.x1 && b.y1 > r.y0 && b.y0 < r.y1)
             crossing_.push_back(&scene_.root.children[i]);
     }
-    tile_.reset(r.width(), r.height(), r.x0, r.y0, background);
-    const RenderStats stats = renderer_.render_nodes(crossing_, Affine::identity(), tile_, options,
+    BasicCanvas<Pixel>& tile = std::get<BasicCanvas<Pixel>>(tiles_);
+    tile.reset(r.width(), r.height(), r.x0, r.y0, background);
+    const RenderStats stats = renderer_.render_nodes(crossing_, Affine::identity(), tile, options,
                                                      {0, 0, width_, height_});
     for (int y = r.y0; y < r.y1; ++y)
-        std::memcpy(static_cast<void*>(canvas.row(y) + r.x0), tile_.row(y - r.y0),
-                    std::size_t(r.width()) * sizeof(Premul));
+        std::memcpy(static_cast<void*>(canvas.row(y) + r.x0), tile.row(y - r.y0),
+                    std::size_t(r.width()) * sizeof(Pixel));
     return stats;
 }
+
+template RenderStats Drawing::render(Canvas&, Premul, const RenderOptions&, int);
+template RenderStats Drawing::render(Canvas8&, Premul, const RenderOptions&, int);
+template RenderStats Drawing::render_region(Canvas&, const PixelRect&, Premul,
+                                            const RenderOptions&);
+template RenderStats Drawing::render_region(Canvas8&, const PixelRect&, Premul,
+                                            const RenderOptions&);
 
 PixelRect united(const PixelRect& a, const PixelRect& b) {
     if (a.width() <= 0 || a.height() <= 0) return b;

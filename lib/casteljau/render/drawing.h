@@ -28,6 +28,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 namespace casteljau {
@@ -85,11 +86,14 @@ class Drawing {
     /// The drawing as a scene (top-level shapes in order), for Renderer or BandRenderer.
     const Scene& scene() const { return scene_; }
 
-    /// Renders everything onto `canvas` (width() x height(), origin 0, 0) over `background`.
-    RenderStats render(Canvas& canvas, Premul background, const RenderOptions& options = {},
-                       int threads = 1);
+    /// Renders everything onto `canvas` (a Canvas or a Canvas8, width() x
+    /// height(), origin 0, 0) over `background`.
+    template <class Pixel>
+    RenderStats render(BasicCanvas<Pixel>& canvas, Premul background,
+                       const RenderOptions& options = {}, int threads = 1);
     /// Re-renders only `dirty` (clipped to the canvas) of a canvas rendered before.
-    RenderStats render_region(Canvas& canvas, const PixelRect& dirty, Premul background,
+    template <class Pixel>
+    RenderStats render_region(BasicCanvas<Pixel>& canvas, const PixelRect& dirty, Premul background,
                               const RenderOptions& options = {});
 
   private:
@@ -98,7 +102,7 @@ class Drawing {
     std::vector<Rect> boxes_; // Renderer::reach_box of each shape, in pixels
     BandRenderer bands_;
     Renderer renderer_;
-    Canvas tile_;
+    std::tuple<Canvas, Canvas8> tiles_; // render_region's, per pixel format
     std::vector<const Node*> crossing_; // reused by render_region
 };
 
