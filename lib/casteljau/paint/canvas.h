@@ -122,9 +122,10 @@ class BasicCanvas {
     int w_ = 0, h_ = 0, ox_ = 0, oy_ = 0;
 };
 
-/// Float pixels: exact compositing, and the format of layers and EXR output.
+/// Float pixels: compositing without 8-bit rounding; what EXR output and the
+/// image-size limits assume.
 using Canvas = BasicCanvas<Premul>;
-/// 8-bit pixels: a quarter of the memory, each composite rounded to 1/255.
+/// 8-bit pixels: a quarter of the memory, each composite rounded to the nearest 1/255.
 using Canvas8 = BasicCanvas<Premul8>;
 
 extern template class BasicCanvas<Premul>;

@@ -10,10 +10,10 @@
 // the background as they are first written, and settled when the band is
 // done). Bands pay even on one thread: a band (kBandRows x width x 16 bytes
 // of float, 4 of Canvas8) stays in cache while every shape crossing it is
-// composited, where a whole frame would not (measured in bench/render). Edge geometry is always
-// clipped to the frame, never to a band (see EdgeList), and every pixel is
-// composited by the same shapes in the same order, so the result is
-// bit-identical to one thread (tested).
+// composited, where a whole frame would not (measured in bench/render).
+// Edge geometry is always clipped to the frame, never to a band (see
+// EdgeList), and every pixel is composited by the same shapes in the same
+// order, so the result is bit-identical to one thread (tested).
 // Flattening is repeated per band for shapes that cross several bands; pieces
 // wholly outside a band are culled before flattening. The scene's top-level
 // nodes are sorted into the bands they reach once per frame
