@@ -54,23 +54,18 @@ void BM_DenseScene(benchmark::State& state) {
     static const Scene scene = load(CASTELJAU_EXAMPLES "/svg/dense.svg");
     render_frames<Canvas>(state, scene, state.range(0) != 0);
 }
-BENCHMARK_TEMPLATE(BM_DenseScene, Canvas)
-    ->Arg(1)
-    ->Arg(0)
-    ->ArgName("antialias")
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_DenseScene, Canvas8)
-    ->Arg(1)
-    ->Arg(0)
-    ->ArgName("antialias")
-    ->Unit(benchmark::kMillisecond);
+void antialias_on_and_off(benchmark::internal::Benchmark* b) {
+    b->Arg(1)->Arg(0)->ArgName("antialias")->Unit(benchmark::kMillisecond);
+}
+BENCHMARK_TEMPLATE(BM_DenseScene, Canvas)->Apply(antialias_on_and_off);
+BENCHMARK_TEMPLATE(BM_DenseScene, Canvas8)->Apply(antialias_on_and_off);
 
 // The machine's own scaling, as references for the renderer's: the same
 // sharing out (6 units taken from a shared counter by 1 or 2 threads of a
 // WorkerPool, as BandRenderer's), of work that shares no data, so on an idle
 // machine with private cores two threads take half the time; what they
-// lose, the machine takes. Two kinds of unit, each lasting about as long as one of the dense
-// scene's bands (2-4 ms on the machine of bench/README.md):
+// lose, the machine takes. Two kinds of unit, each lasting about as long as
+// one of the dense scene's bands (2-4 ms on the machine of bench/README.md):
 // - memory: 80 read-modify-write passes over a private buffer the size of a
 //   band's pixels (128 rows of 1024 float RGBA pixels, 2 MiB). More memory-
 //   bound than rendering, so a floor to compare with, not a ceiling;
@@ -176,16 +171,11 @@ void BM_MemsetSameBuffer(benchmark::State& state) {
     state.counters["Mpixels_per_s"] =
         benchmark::Counter(2048.0 * 2048 * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
 }
-BENCHMARK_TEMPLATE(BM_MemsetSameBuffer, Premul)
-    ->Arg(0)
-    ->Arg(0x5a)
-    ->ArgName("byte")
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_MemsetSameBuffer, Premul8)
-    ->Arg(0)
-    ->Arg(0x5a)
-    ->ArgName("byte")
-    ->Unit(benchmark::kMillisecond);
+void zero_and_non_zero_bytes(benchmark::internal::Benchmark* b) {
+    b->Arg(0)->Arg(0x5a)->ArgName("byte")->Unit(benchmark::kMillisecond);
+}
+BENCHMARK_TEMPLATE(BM_MemsetSameBuffer, Premul)->Apply(zero_and_non_zero_bytes);
+BENCHMARK_TEMPLATE(BM_MemsetSameBuffer, Premul8)->Apply(zero_and_non_zero_bytes);
 
 // The rasterizer alone (edges -> spans, no canvas) on a 24 px circle placed
 // in a 64 px frame and in a 16384 px frame: the cost follows the outline and

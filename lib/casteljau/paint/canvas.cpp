@@ -120,8 +120,8 @@ void BasicCanvas<Pixel>::clear_row_except(Pixel* r, int y, int x0, int x1) {
 
 template <class Pixel>
 void BasicCanvas<Pixel>::fill(Premul color) {
-    Pixel* p = pixels();
-    std::fill(p, p + std::size_t(w_) * std::size_t(h_), pixel_of<Pixel>(color));
+    const Pixel c = pixel_of<Pixel>(color);
+    for (int y = 0; y < h_; ++y) fill_run(pixels() + std::size_t(y) * std::size_t(w_), w_, c);
     std::fill(stale_.begin(), stale_.end(), 0);
 }
 
