@@ -214,6 +214,28 @@ TEST(Stroker, DashesOutOfReachOfTheVisibleBoxAreNotBuilt) {
     }
 }
 
+// fuzz_svg_render (regressions/svg_render/dashes-on-a-chord-7e17-long.svg):
+// a cubic with a control point at 8e20 flattens, for dashing, into a last
+// chord 7.4e17 long that ends in the visible box, where positions along it
+// are multiples of 128; adding a 4-unit dash to one did not move the walk,
+// which emitted 2^19 dots at one point (8.4M points, 800 MB for a 96 px
+// image). The visible part, 220 units of chords, holds a dozen dashes.
+TEST(Stroker, DashesOnAChordFarLongerThanTheBoxFollowTheBox) {
+    StrokeGeometry s = style(10, LineCap::Round);
+    s.dashes = {20, 8, 4, 8};
+    const double scale = 0.3; // the fuzz target's: 320 x 240 drawn at 96 x 72
+    const Rect strip{-1 / scale, -1 / scale, 97 / scale, 65 / scale};
+    std::vector<Polygon> out;
+    stroke_outline(parse("M150 200 C 1 -5310 8e20 260 290 160"), s, 0.25 / scale, out, strip);
+    std::size_t points = 0;
+    for (const Polygon& p : out) {
+        points += p.size();
+        for (Point q : p) EXPECT_TRUE(q.is_finite());
+    }
+    EXPECT_GT(out.size(), 0u); // the dashes near both ends are in the box
+    EXPECT_LT(out.size(), 40u) << points << " points";
+}
+
 // Solid strokes of geometry reaching 1e308 (found by fuzz_svg_render: the
 // stroke of an arc of radius 5e307 sampled the whole arc): only the part near
 // the visible box is built, and a nearly horizontal line from -1e300 to 1e300

@@ -419,24 +419,30 @@ void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
                     pass(v[i - 1].t, len, v[i].t);
                     continue;
                 }
-                double s0 = 0, s1 = len;
+                // The walk measures from s0 along the stretch, whose length is
+                // taken between the clipped ends: on a chord 1e17 long s0 and
+                // s1 are multiples of 16 (their ulp), where s1 - s0 would be
+                // off by that much and s0 + 4 would not move (fuzz_svg_render:
+                // 2^19 dots at one point, 800 MB for a 96 px image).
+                double s0 = 0, s1 = len, stretch = len;
                 if (!keep.contains(a) || !keep.contains(b)) {
                     const auto part = clip_line(a, b, keep);
                     s0 = part ? distance(a, part->front()) : len;
                     s1 = part ? distance(a, part->back()) : len;
+                    stretch = part ? distance(part->front(), part->back()) : 0;
                 }
                 if (s0 > 0) pass(v[i - 1].t, s0, t_at(s0));
-                double pos = s0;
-                while (s1 - pos > dash.remaining && walked < kMaxDashes) {
-                    pos += dash.remaining; // the pattern changes in this chord
-                    const double t = t_at(pos);
+                double walk = 0;
+                while (stretch - walk > dash.remaining && walked < kMaxDashes) {
+                    walk += dash.remaining; // the pattern changes in this chord
+                    const double t = t_at(s0 + walk);
                     if (dash.in_dash()) emit(seg, t_from, t);
                     open = false;
                     t_from = t;
                     dash.next();
                     ++walked;
                 }
-                dash.remaining -= s1 - pos;
+                dash.remaining -= stretch - walk;
                 if (s1 < len) pass(t_at(s1), len - s1, v[i].t);
             }
             if (walked >= kMaxDashes) return; // the rest is not drawn
