@@ -158,6 +158,13 @@ def generate_valid(folder):
         '<circle cx="5000256" cy="256" r="5000000" fill="#c9a227" stroke="black" stroke-width="4"/>\n'
         '<circle cx="-4999900" cy="-4999900" r="7071000" fill="none" stroke="#444" stroke-width="2" '
         'stroke-dasharray="7 5"/>\n')
+    # One subpath of 8000 round joins on a stroke 1e6 px wide, all within reach
+    # of the image: 4400 outline points a join (1.2 GB before the outline's
+    # point limit counted a subpath as it grew).
+    zigzag = " ".join("L%d 30" % (30 if i % 2 else 34) for i in range(8001))
+    svg("round_joins_1e6_px_wide.svg", 64, 64,
+        '<path d="M30 30 %s" fill="none" stroke="black" stroke-width="1e6" '
+        'stroke-linejoin="round"/>\n' % zigzag)
     rects = "".join('<rect x="%.2f" y="%.2f" width="0.3" height="0.3" fill="#%06x"/>\n'
                     % ((i * 7.31) % 1000, (i * 3.17) % 1000, (i * 2654435761) & 0xffffff)
                     for i in range(100000))
@@ -181,6 +188,7 @@ VALID = {
     "control_points_1e9_apart.svg": ([], 2.0),
     "circle_1e7_px_off_canvas.svg": ([], 2.0),
     "subpixel_shapes_100k.svg": ([], 5.0),
+    "round_joins_1e6_px_wide.svg": ([], 2.0),
     "patch_collapsed_edge.bpt": (["--width", "320", "--height", "240"], 2.0),
 }
 

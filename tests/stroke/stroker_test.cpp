@@ -283,6 +283,26 @@ TEST(Stroker, AStroke1e22WideHasBoundedRoundCapsAndJoins) {
     EXPECT_LT(points, 1u << 20);
 }
 
+// 8000 round joins on a stroke 1e6 px wide, one subpath: 4400 points a join
+// took 1.2 GB on the way to coverage, past the 1 GiB promised for hostile
+// input, as the outline's point limit (2^23, stroker.cpp) was only checked
+// between subpaths. A subpath that outgrows it is dropped, and so is what
+// follows it (a small square); 1000 such joins are within it, and drawn.
+TEST(Stroker, ASubpathBeyondThePointLimitIsNotDrawn) {
+    const auto zigzag_then_square = [](int joins) {
+        std::string d = "M30 30";
+        for (int i = 0; i <= joins; ++i) d += i % 2 ? " L30 30" : " L34 30";
+        return parse((d + " M10 10 h4 v4 h-4 z").c_str());
+    };
+    const StrokeGeometry wide = style(1e6, LineCap::Round, LineJoin::Round);
+    std::vector<Polygon> out;
+    stroke_outline(zigzag_then_square(8000), wide, 0.25, out, Rect{0, 0, 64, 64});
+    EXPECT_TRUE(out.empty()) << out.size() << " polygons";
+    out.clear();
+    stroke_outline(zigzag_then_square(1000), wide, 0.25, out, Rect{0, 0, 64, 64});
+    EXPECT_EQ(out.size(), 3u); // the zigzag's outline, the closed square's two sides
+}
+
 TEST(Stroker, ZeroLengthSubpaths) {
     const Path dot = parse("M50 50 L50 50");
     std::vector<Polygon> round, square, butt;

@@ -44,10 +44,15 @@ Vec2 tangent(const Segment& s, const Curve& c, double t) {
 // coarser than the tolerance, by 7.4e-8 of the half-width.
 constexpr double kMaxArcSteps = 1 << 12;
 
-// Outline points per stroked path at most (256 MiB): subpaths beyond are not
-// drawn. Only absurd strokes reach it, such as a million dashes with round
-// caps on a stroke millions of pixels wide.
-constexpr std::size_t kMaxOutlinePoints = std::size_t(1) << 24;
+// Outline points per stroked path (per strip of rows, see Renderer) at most:
+// a subpath that would take more is not drawn, nor any after it. A point
+// costs some 70 bytes on its way to coverage (itself, its edge, its sorted
+// edge, vectors' slack), so 2^23 points stay within the 1 GiB promised for
+// hostile input (8000 round joins on a stroke 1e6 px wide in one subpath
+// took 1.2 GB before subpaths were counted as they grow). Only absurd
+// strokes reach it: the million-segment zigzag of tests/bad_input, all in
+// one strip, takes 3.6M.
+constexpr std::size_t kMaxOutlinePoints = std::size_t(1) << 23;
 
 // (b): the normal may turn by dphi between samples; at least 4 samples per
 // quarter turn keep round joins and tiny widths sensible too. dphi =
@@ -267,12 +272,18 @@ class Outline {
         }
     }
 
-    void subpath(Point start, std::span<const Segment> segments, bool closed) {
+    // Outlines a subpath, unless it takes more than `budget` points: then
+    // it is dropped (a part of it would be a wrong shape) and false returned.
+    // Counted per segment: one adds at most its samples and a few joins.
+    bool subpath(Point start, std::span<const Segment> segments, bool closed, std::size_t budget) {
         std::vector<const Segment*>& segs = b_.segs;
         segs.clear();
         for (const Segment& s : segments)
             if (!degenerate(s)) segs.push_back(&s);
-        if (segs.empty()) return zero_length(start);
+        if (segs.empty()) {
+            zero_length(start);
+            return true;
+        }
         // Both sides' polygons are taken before either is referenced: taking
         // one may move the others.
         const std::size_t left_at = b_.new_polygon();
@@ -303,16 +314,21 @@ class Outline {
             }
             last_d = samples.back().d;
             last_p = samples.back().p;
+            if (left.size() + right.size() > budget) {
+                b_.count = left_at;
+                return false;
+            }
         }
         if (closed) {
             join(left, last_p, last_d, first_d, +1, st_.join);
             join(right, last_p, last_d, first_d, -1, st_.join);
             std::reverse(right.begin(), right.end());
-            return;
+            return true;
         }
         cap(left, last_p, last_d);
         left.insert(left.end(), right.rbegin(), right.rend());
         cap(left, start, -first_d);
+        return true;
     }
 
   private:
@@ -530,10 +546,11 @@ std::span<const Polygon> Stroker::outline(const Path& path, const StrokeGeometry
     Outline outline(h, tolerance, style, b);
     std::size_t points = 0;
     for (const Pieces::Run& run : b.pieces.runs) {
-        if (points >= kMaxOutlinePoints) break;
         if (run.begin == run.end) continue; // a lone move_to draws nothing
         const std::size_t before = b.count;
-        outline.subpath(run.start, b.pieces.segments_of(run), run.closed);
+        if (points >= kMaxOutlinePoints || !outline.subpath(run.start, b.pieces.segments_of(run),
+                                                            run.closed, kMaxOutlinePoints - points))
+            break;
         for (std::size_t i = before; i < b.count; ++i) points += b.polygons[i].size();
     }
     return {b.polygons.data(), b.count};
