@@ -15,6 +15,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include <numbers>
+#include <string>
 
 namespace casteljau {
 namespace {
