@@ -44,14 +44,13 @@ Vec2 tangent(const Segment& s, const Curve& c, double t) {
 // coarser than the tolerance, by 7.4e-8 of the half-width.
 constexpr double kMaxArcSteps = 1 << 12;
 
-// Outline points per stroked path (per strip of rows, see Renderer) at most:
-// a subpath that would take more is not drawn, nor any after it. A point
-// costs some 70 bytes on its way to coverage (itself, its edge, its sorted
-// edge, vectors' slack), so 2^23 points stay within the 1 GiB promised for
-// hostile input (8000 round joins on a stroke 1e6 px wide in one subpath
-// took 1.2 GB before subpaths were counted as they grow). Only absurd
-// strokes reach it: the million-segment zigzag of tests/bad_input, all in
-// one strip, takes 3.6M.
+// Outline points per call (a strip of rows, see Renderer) at most: a subpath
+// that would take more is not drawn, nor any after it. Counted as a subpath
+// grows, since one subpath alone can hold millions (round joins on a stroke
+// 1e6 px wide: 4400 points each). A point costs some 70 bytes on its way to
+// coverage (itself, its edge, its sorted edge, vectors' slack), so 2^23
+// stay within the 1 GiB promised for hostile input, at twice the 3.6M of the
+// million-segment zigzag of tests/bad_input, all in one strip.
 constexpr std::size_t kMaxOutlinePoints = std::size_t(1) << 23;
 
 // (b): the normal may turn by dphi between samples; at least 4 samples per
@@ -438,8 +437,8 @@ void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
                 // The walk measures from s0 along the stretch, whose length is
                 // taken between the clipped ends: on a chord 1e17 long s0 and
                 // s1 are multiples of 16 (their ulp), where s1 - s0 would be
-                // off by that much and s0 + 4 would not move (fuzz_svg_render:
-                // 2^19 dots at one point, 800 MB for a 96 px image).
+                // off by that much and s0 + 4 would not move (a walk that
+                // stood still emitted 2^19 dots at one point).
                 double s0 = 0, s1 = len, stretch = len;
                 if (!keep.contains(a) || !keep.contains(b)) {
                     const auto part = clip_line(a, b, keep);
