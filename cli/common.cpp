@@ -39,14 +39,19 @@ bool check_tolerance(const char* command, double tolerance) {
 }
 
 void add_svg_options(CLI::App* cmd, SvgOptions& o) {
-    cmd->add_flag("--partial-path-data", o.partial_path_data,
-                  "Draw a path with bad path data up to the error, with a warning (SVG 1.1 "
-                  "appendix F.2, as browsers do), instead of failing");
+    cmd->add_flag("--strict", o.strict,
+                  "Make the first problem in an SVG file an error (exit 2, no image), instead of "
+                  "a warning and the recovery the SVG and CSS specs prescribe (an invalid value "
+                  "ignored, path data drawn up to its error)");
+    // Path data is drawn up to its first error by default now: the flag of
+    // that name stays, accepted and doing nothing, for the scripts that pass it.
+    cmd->add_flag("--partial-path-data")->group("");
 }
 
 std::optional<Scene> load_svg(const std::string& path, const SvgOptions& options, int& status) {
     SvgResult doc = read_svg_file(path, options);
-    for (const std::string& w : doc.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+    for (const SvgDiagnostic& w : doc.warnings)
+        std::fprintf(stderr, "warning: %s\n", w.text().c_str());
     if (!doc.scene) {
         std::fprintf(stderr, "error: %s\n", doc.error.c_str());
         status = doc.io_error ? kExitFailure : kExitBadInput;

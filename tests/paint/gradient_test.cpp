@@ -97,7 +97,7 @@ TEST(Gradient, SingularMapsAndNoStopsPaintNothing) {
     EXPECT_FALSE(sh.prepare(g, Affine::identity(), 1));
 }
 
-Canvas render(const std::string& svg, std::vector<std::string>* warnings = nullptr) {
+Canvas render(const std::string& svg, std::vector<SvgDiagnostic>* warnings = nullptr) {
     const SvgResult doc = parse_svg(svg, "g.svg");
     EXPECT_TRUE(doc.scene) << doc.error;
     if (warnings) *warnings = doc.warnings;
@@ -121,7 +121,7 @@ TEST(SvgGradient, BoundingBoxAndUserSpaceUnits) {
 }
 
 TEST(SvgGradient, TransformHrefInheritanceAndStops) {
-    std::vector<std::string> warnings;
+    std::vector<SvgDiagnostic> warnings;
     const Canvas c =
         render(R"svg(<svg xmlns:xlink="http://www.w3.org/1999/xlink" width="100" height="100">
         <linearGradient id="stops"><stop offset="0" stop-color="black"/><stop offset="100%" style="stop-color:#fff"/></linearGradient>
@@ -136,7 +136,7 @@ TEST(SvgGradient, TransformHrefInheritanceAndStops) {
 }
 
 TEST(SvgGradient, MissingReferencesFallBackWithAWarning) {
-    std::vector<std::string> warnings;
+    std::vector<SvgDiagnostic> warnings;
     const Canvas c = render(R"svg(<svg width="30" height="10">
         <linearGradient id="a" href="#gone"><stop offset="0" stop-color="blue"/></linearGradient>
         <rect width="10" height="10" fill="url(#missing) lime"/>
@@ -149,25 +149,44 @@ TEST(SvgGradient, MissingReferencesFallBackWithAWarning) {
     EXPECT_GE(warnings.size(), 2u);
 }
 
-TEST(SvgGradient, HrefCyclesAndOverlongChainsAreErrorsAtTheLink) {
-    const SvgResult cycle = parse_svg(R"svg(<svg width="30" height="10">
+// The located warning whose text contains `what`, or "" (with the list).
+std::string find_warning(const SvgResult& r, const std::string& what) {
+    std::string all;
+    for (const SvgDiagnostic& w : r.warnings) {
+        if (w.text().find(what) != std::string::npos) return w.text();
+        all += "\n  " + w.text();
+    }
+    ADD_FAILURE() << "no warning with '" << what << "' among:" << all;
+    return "";
+}
+
+TEST(SvgGradient, HrefCyclesAndOverlongChainsEndTheChainThereWithAWarning) {
+    const std::string cycle_svg = R"svg(<svg width="30" height="10">
         <linearGradient id="a" href="#b"><stop offset="0" stop-color="blue"/></linearGradient>
         <linearGradient id="b" href="#a"/>
-        <rect width="10" height="10" fill="url(#b)"/></svg>)svg",
-                                      "c.svg");
-    EXPECT_FALSE(cycle.scene);
-    EXPECT_NE(cycle.error.find("c.svg:2: <linearGradient>: href '#b' makes a cycle"),
+        <rect width="10" height="10" fill="url(#b)"/></svg>)svg";
+    const SvgResult cycle = parse_svg(cycle_svg, "c.svg");
+    ASSERT_TRUE(cycle.scene) << cycle.error;
+    // b takes a's stops; the chain ends at a's link back to b.
+    const Fill& fill = *std::get<Shape>(cycle.scene->root.children.at(0).item).fill;
+    ASSERT_TRUE(fill.gradient);
+    EXPECT_EQ(fill.gradient->stops.at(0).color, (Rgba{0, 0, 1, 1}));
+    find_warning(cycle, "c.svg:2: <linearGradient>: href '#b' makes a cycle");
+    SvgOptions strict;
+    strict.strict = true;
+    const SvgResult refused = parse_svg(cycle_svg, "c.svg", strict);
+    EXPECT_FALSE(refused.scene);
+    EXPECT_NE(refused.error.find("c.svg:2: <linearGradient>: href '#b' makes a cycle"),
               std::string::npos)
-        << cycle.error;
+        << refused.error;
     std::string chain = "<svg width='1' height='1'>";
     for (int i = 0; i < 100; ++i)
         chain += "<linearGradient id='g" + std::to_string(i) + "' href='#g" +
                  std::to_string(i + 1) + "'/>\n";
     chain += "<linearGradient id='g100'/><rect width='1' height='1' fill='url(#g0)'/></svg>";
     const SvgResult long_chain = parse_svg(chain, "l.svg");
-    EXPECT_NE(long_chain.error.find("l.svg:64: <linearGradient>: the href chain is longer than 64"),
-              std::string::npos)
-        << long_chain.error;
+    ASSERT_TRUE(long_chain.scene) << long_chain.error;
+    find_warning(long_chain, "l.svg:64: <linearGradient>: the href chain is longer than 64");
 }
 
 // The shader keeps its color table for the gradient it last built: a second
@@ -191,17 +210,23 @@ TEST(SvgGradient, OneRendererForSeveralScenesUsesEachScenesGradient) {
     }
 }
 
-TEST(SvgGradient, MalformedValuesAreErrorsWithTheirElement) {
-    const SvgResult r =
-        parse_svg(R"svg(<svg width="10" height="10"><linearGradient id="g" spreadMethod="wobble">
-        <stop offset="0"/></linearGradient><rect width="10" height="10" fill="url(#g)"/></svg>)svg",
-                  "m.svg");
-    EXPECT_NE(r.error.find("m.svg:1: <linearGradient>: spreadMethod: 'wobble'"), std::string::npos)
-        << r.error;
-    const SvgResult s = parse_svg(R"svg(<svg width="10" height="10"><linearGradient id="g">
-        <stop offset="x"/></linearGradient><rect width="10" height="10" fill="url(#g)"/></svg>)svg",
-                                  "s.svg");
-    EXPECT_NE(s.error.find("s.svg:2: <stop>: offset"), std::string::npos) << s.error;
+TEST(SvgGradient, InvalidValuesTakeTheirInitialValueWithAWarning) {
+    // spreadMethod wobble: pad; gradientUnits bogus: objectBoundingBox; the
+    // stop offset x: 0. So a red-to-blue ramp across the rect, padded.
+    const SvgResult r = parse_svg(R"svg(<svg width="100" height="10">
+        <linearGradient id="g" spreadMethod="wobble" gradientUnits="bogus" x2="0.5">
+        <stop offset="x" stop-color="red"/><stop offset="1" stop-color="blue"/></linearGradient>
+        <rect width="100" height="10" fill="url(#g)"/></svg>)svg",
+                                  "m.svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    find_warning(r, "m.svg:2: <linearGradient>: spreadMethod: 'wobble' is invalid; pad is used");
+    find_warning(r, "m.svg:2: <linearGradient>: gradientUnits: 'bogus'");
+    find_warning(r, "m.svg:3: <stop>: offset: 'x' is not a number; 0 is used");
+    Canvas c(100, 10);
+    Renderer().render(*r.scene, Affine::identity(), c, {});
+    EXPECT_NEAR(c.row(5)[0].r, 1.0f, 0.02f);   // offset 0: red
+    EXPECT_NEAR(c.row(5)[25].r, 0.49f, 0.02f); // halfway to x2 = 0.5 of the box
+    EXPECT_EQ(c.row(5)[75].b, 1.0f);           // padded beyond x2
 }
 
 } // namespace

@@ -67,6 +67,59 @@ TEST(Render, GroupOpacityDiffersFromPerShapeOpacityWhereShapesOverlap) {
     EXPECT_FLOAT_EQ(s.row(1)[1].a, 0.5f);
 }
 
+// A layer holds all that is drawn into it: group opacity of 0.999 over a
+// shape of one paint draws what the shape at 0.999 opacity draws without a
+// layer, for random fills and strokes (wide, mitred, capped, dashed; lines
+// with no height). The layer once took the paths' tight bounds: strokes lost
+// their outer half, and a horizontal line's stroke became a hairline.
+TEST(Render, AGroupLayerHoldsEverythingItsShapesDraw) {
+    testing::Rng rng(21);
+    const LineCap caps[] = {LineCap::Butt, LineCap::Round, LineCap::Square};
+    const LineJoin joins[] = {LineJoin::Miter, LineJoin::Round, LineJoin::Bevel};
+    for (int trial = 0; trial < 60; ++trial) {
+        Shape s;
+        if (trial % 3 == 2) { // a horizontal or vertical line: no area at all
+            const Point a{rng.uniform(10, 50), rng.uniform(10, 50)};
+            s.path.move_to(a);
+            s.path.line_to(trial % 2 ? Point{rng.uniform(60, 90), a.y}
+                                     : Point{a.x, rng.uniform(60, 90)});
+        } else {
+            s.path = testing::random_blob(rng, 60, 4);
+        }
+        s.transform = Affine::translate({20, 20});
+        const Rgba color{float(rng.uniform(0, 1)), float(rng.uniform(0, 1)),
+                         float(rng.uniform(0, 1)), 1};
+        if (trial % 3 == 0) {
+            s.fill = Fill{color, nullptr, 1, FillRule::NonZero};
+        } else {
+            StrokeGeometry g;
+            g.width = rng.uniform(1, 24);
+            g.cap = caps[trial % 3];
+            g.join = joins[(trial / 3) % 3];
+            g.miter_limit = rng.uniform(1, 10);
+            if (trial % 5 == 0) g.dashes = {rng.uniform(2, 9), rng.uniform(2, 9)};
+            s.stroke = Stroke{color, nullptr, 1, g};
+        }
+        Scene layered, direct;
+        layered.width = direct.width = 120;
+        layered.height = direct.height = 120;
+        layered.root.children.push_back(Node{Group{0.999f, {Node{s}}}});
+        s.opacity = 0.999f;
+        direct.root.children.push_back(Node{s});
+        Canvas a(120, 120), b(120, 120);
+        Renderer r;
+        r.render(layered, Affine::identity(), a, {});
+        r.render(direct, Affine::identity(), b, {});
+        float worst = 0;
+        for (int y = 0; y < 120; ++y)
+            for (int x = 0; x < 120; ++x)
+                worst = std::max(worst, std::fabs(a.row(y)[x].a - b.row(y)[x].a));
+        EXPECT_LT(worst, 1e-5f) << "trial " << trial << ", bounds " << s.path.bounds().x0 << " "
+                                << s.path.bounds().y0 << " " << s.path.bounds().x1 << " "
+                                << s.path.bounds().y1;
+    }
+}
+
 TEST(Render, ScaleAndViewBoxPlaceShapesExactly) {
     const Canvas c = render(
         R"(<svg width="8" height="8" viewBox="0 0 4 4"><rect x="1" y="1" width="2" height="1" fill="red"/></svg>)",

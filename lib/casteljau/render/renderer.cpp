@@ -44,12 +44,6 @@ Rect united_over_shapes(const Node& n, const BoxOf& box_of) {
     return r;
 }
 
-// Device-space bounds of a node, from the shapes' tight user-space bounds.
-Rect node_bounds(const Node& n, const Affine& view) {
-    return united_over_shapes(
-        n, [&](const Shape& s) { return device_box(s.path.bounds(), view * s.transform); });
-}
-
 } // namespace
 
 RenderStats& RenderStats::operator+=(const RenderStats& o) {
@@ -151,9 +145,12 @@ void Renderer::draw_node(const Node& n, Target& target, int depth) {
 template <class Target, class Draw>
 void Renderer::in_layer(const Node& n, Target& target, int depth, float opacity, Draw draw) {
     if (opacity <= 0.0f) return;
-    // The layer covers the node's bounds (one pixel of margin for
-    // antialiasing), clipped to the target.
-    const Rect b = node_bounds(n, view_);
+    // The layer covers all that the node can draw: its shapes' control
+    // boxes grown by their strokes' reach (a wide stroke, a miter, a square
+    // cap), with one pixel of margin for antialiasing, clipped to the target.
+    // (It once took the paths' tight bounds: a stroke's outer half was cut
+    // away, and a horizontal line's stroke was drawn as a hairline.)
+    const Rect b = node_reach_box(n, view_);
     if (b.is_empty()) return;
     const int tx0 = target.origin_x(), tx1 = tx0 + target.width();
     const int ty0 = target.origin_y(), ty1 = ty0 + target.height();

@@ -4,7 +4,10 @@
 #include <array>
 #include <cctype>
 #include <charconv>
+#include <cmath>
+#include <numbers>
 #include <string>
+#include <vector>
 
 namespace casteljau {
 
@@ -190,49 +193,169 @@ int hex(char c) {
     return -1;
 }
 
+// #rgb, #rgba, #rrggbb, #rrggbbaa (CSS Color 4, 5.2): a short form's digit d
+// stands for dd, that is d * 17.
 std::optional<Rgba> parse_hex(std::string_view h) {
-    if (h.size() != 3 && h.size() != 6) return std::nullopt;
-    int v[6];
+    if (h.size() != 3 && h.size() != 4 && h.size() != 6 && h.size() != 8) return std::nullopt;
+    int v[8];
     for (std::size_t i = 0; i < h.size(); ++i)
         if ((v[i] = hex(h[i])) < 0) return std::nullopt;
-    if (h.size() == 3) return Rgba{v[0] * 17 / 255.0f, v[1] * 17 / 255.0f, v[2] * 17 / 255.0f, 1};
-    return Rgba{(v[0] * 16 + v[1]) / 255.0f, (v[2] * 16 + v[3]) / 255.0f,
-                (v[4] * 16 + v[5]) / 255.0f, 1};
+    const bool shorthand = h.size() <= 4;
+    float c[4] = {0, 0, 0, 1};
+    for (std::size_t k = 0; k < h.size() / (shorthand ? 1 : 2); ++k)
+        c[k] = float(shorthand ? v[k] * 17 : v[2 * k] * 16 + v[2 * k + 1]) / 255.0f;
+    return Rgba{c[0], c[1], c[2], c[3]};
 }
 
-// rgb(r, g, b): three integers, or three percentages.
-std::optional<Rgba> parse_rgb(std::string_view args) {
+// One argument of a color function: a number, with '%' or an angle unit
+// (deg, grad, rad, turn) after it, or the keyword none (modern syntax only).
+struct Arg {
+    double value = 0;
+    std::string_view unit; // "", "%", or an angle unit
+    bool none = false;
+};
+
+std::optional<Arg> parse_arg(std::string_view t) {
+    if (t == "none") return Arg{0, {}, true};
+    if (!t.empty() && t.front() == '+') t.remove_prefix(1);
+    Arg a;
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), a.value);
+    if (ec != std::errc() || !std::isfinite(a.value)) return std::nullopt;
+    a.unit = t.substr(std::size_t(end - t.data()));
+    if (a.unit.empty() || a.unit == "%" || a.unit == "deg" || a.unit == "grad" || a.unit == "rad" ||
+        a.unit == "turn")
+        return a;
+    return std::nullopt;
+}
+
+// The arguments of rgb() or hsl() (CSS Color 4, 5.1 and 7.1): the legacy form
+// "a, b, c[, alpha]" (commas; no none) or the modern "a b c[ / alpha]".
+struct Args {
+    std::vector<Arg> v;
+    bool legacy = false;
+};
+
+bool space(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
+
+std::optional<Args> split_args(std::string_view s) {
+    Args out;
+    out.legacy = s.find(',') != s.npos;
+    std::vector<std::string_view> tokens;
+    std::size_t slash_after = 0; // tokens before the slash, 0 when none
+    if (out.legacy) {
+        for (std::size_t start = 0; start <= s.size();) {
+            const std::size_t comma = std::min(s.find(',', start), s.size());
+            tokens.push_back(trim(s.substr(start, comma - start)));
+            start = comma + 1;
+        }
+    } else {
+        std::size_t i = 0;
+        while (i < s.size()) {
+            if (space(s[i])) {
+                ++i;
+            } else if (s[i] == '/') {
+                if (slash_after || tokens.size() != 3) return std::nullopt;
+                slash_after = tokens.size(), ++i;
+            } else {
+                const std::size_t start = i;
+                while (i < s.size() && !space(s[i]) && s[i] != '/') ++i;
+                tokens.push_back(s.substr(start, i - start));
+            }
+        }
+        if (tokens.size() != (slash_after ? 4u : 3u)) return std::nullopt;
+    }
+    if (tokens.size() < 3 || tokens.size() > 4) return std::nullopt;
+    for (const std::string_view t : tokens) {
+        const auto a = parse_arg(t); // a legacy token with a space in it fails here
+        if (!a || (out.legacy && a->none)) return std::nullopt;
+        out.v.push_back(*a);
+    }
+    return out;
+}
+
+// An alpha value: a number or a percentage, clamped to [0, 1]; none is 0.
+std::optional<float> alpha_of(const std::vector<Arg>& args) {
+    if (args.size() < 4) return 1.0f;
+    const Arg& a = args[3];
+    if (!a.unit.empty() && a.unit != "%") return std::nullopt;
+    return float(std::clamp(a.unit == "%" ? a.value / 100 : a.value, 0.0, 1.0));
+}
+
+// rgb() and rgba(): numbers in [0, 255] or percentages, clamped. The legacy
+// form takes all three of one kind; the modern form may mix them.
+std::optional<Rgba> parse_rgb(std::string_view inside) {
+    const auto args = split_args(inside);
+    if (!args) return std::nullopt;
+    const auto alpha = alpha_of(args->v);
     float c[3];
     for (int i = 0; i < 3; ++i) {
-        args = trim(args);
-        double v;
-        const auto [end, ec] = std::from_chars(args.data(), args.data() + args.size(), v);
-        if (ec != std::errc()) return std::nullopt;
-        args.remove_prefix(std::size_t(end - args.data()));
-        const bool percent = !args.empty() && args.front() == '%';
-        if (percent) args.remove_prefix(1);
-        c[i] = float(std::clamp(percent ? v / 100.0 : v / 255.0, 0.0, 1.0));
-        args = trim(args);
-        if (i < 2) {
-            if (args.empty() || args.front() != ',') return std::nullopt;
-            args.remove_prefix(1);
-        }
+        const Arg& a = args->v[std::size_t(i)];
+        const bool percent = a.unit == "%";
+        if ((!percent && !a.unit.empty()) || (args->legacy && percent != (args->v[0].unit == "%")))
+            return std::nullopt;
+        c[i] = float(std::clamp(percent ? a.value / 100 : a.value / 255, 0.0, 1.0));
     }
-    if (!trim(args).empty()) return std::nullopt;
-    return Rgba{c[0], c[1], c[2], 1};
+    if (!alpha) return std::nullopt;
+    return Rgba{c[0], c[1], c[2], *alpha};
+}
+
+// hsl() and hsla() (CSS Color 4, 7): the hue in degrees (a number or an
+// angle), saturation and lightness as percentages (the modern form also takes
+// numbers, as percentages without the sign), then the spec's hsl-to-rgb.
+std::optional<Rgba> parse_hsl(std::string_view inside) {
+    const auto args = split_args(inside);
+    if (!args) return std::nullopt;
+    const auto alpha = alpha_of(args->v);
+    const Arg& h = args->v[0];
+    double deg = h.value;
+    if (h.unit == "grad")
+        deg *= 0.9;
+    else if (h.unit == "rad")
+        deg *= 180 / std::numbers::pi;
+    else if (h.unit == "turn")
+        deg *= 360;
+    else if (h.unit == "%")
+        return std::nullopt;
+    double sl[2];
+    for (int i = 0; i < 2; ++i) {
+        const Arg& a = args->v[std::size_t(i) + 1];
+        if (a.unit != "%" && (args->legacy || !a.unit.empty())) return std::nullopt;
+        sl[i] = std::clamp(a.value / 100, 0.0, 1.0);
+    }
+    if (!alpha) return std::nullopt;
+    const double hue = std::fmod(std::fmod(deg, 360) + 360, 360);
+    const auto f = [&](double n) {
+        const double k = std::fmod(n + hue / 30, 12);
+        const double a = sl[0] * std::min(sl[1], 1 - sl[1]);
+        return float(sl[1] - a * std::max(-1.0, std::min({k - 3, 9 - k, 1.0})));
+    };
+    return Rgba{f(0), f(8), f(4), *alpha};
+}
+
+// "name(" ... ")" of a functional notation, the inside; nullopt otherwise.
+std::optional<std::string_view> function_args(std::string_view s, std::string_view name) {
+    if (s.size() < name.size() + 2 || s.substr(0, name.size()) != name || s[name.size()] != '(' ||
+        s.back() != ')')
+        return std::nullopt;
+    return s.substr(name.size() + 1, s.size() - name.size() - 2);
 }
 
 } // namespace
 
 std::optional<Rgba> parse_color(std::string_view text) {
     text = trim(text);
+    // SVG 1.1 (4.2) lets an ICC color follow an sRGB one: the sRGB one is used.
+    if (const std::size_t icc = text.find("icc-color("); icc != text.npos && icc > 0)
+        text = trim(text.substr(0, icc));
     if (text.empty()) return std::nullopt;
     if (text.front() == '#') return parse_hex(text.substr(1));
     std::string lower(text);
     std::transform(lower.begin(), lower.end(), lower.begin(),
                    [](unsigned char c) { return char(std::tolower(c)); });
-    if (lower.rfind("rgb(", 0) == 0 && lower.back() == ')')
-        return parse_rgb(std::string_view(lower).substr(4, lower.size() - 5));
+    for (const char* f : {"rgb", "rgba"})
+        if (const auto inside = function_args(lower, f)) return parse_rgb(trim(*inside));
+    for (const char* f : {"hsl", "hsla"})
+        if (const auto inside = function_args(lower, f)) return parse_hsl(trim(*inside));
     if (lower == "transparent") return Rgba{0, 0, 0, 0};
     const auto it = std::lower_bound(
         kNamed.begin(), kNamed.end(), lower,

@@ -1,6 +1,11 @@
-// CSS/SVG color values: the 147 SVG 1.1 color keywords (section 4.4),
-// #rgb, #rrggbb, rgb(r, g, b) with integers or percentages (clamped to range,
-// as CSS 2 says), and `transparent`. Keywords are case-insensitive.
+// CSS color values as browsers parse them (CSS Color 4; SVG 1.1, 4.4):
+// the 147 named colors and `transparent` (case-insensitive), #rgb, #rgba,
+// #rrggbb, #rrggbbaa, rgb()/rgba() and hsl()/hsla() in the legacy comma form
+// or the modern space form with "/ alpha", numbers or percentages (out of
+// range clamped), hue angles in deg, grad, rad or turn, and SVG 1.1's
+// "color icc-color(...)" (the sRGB color is used). Not colors here, so
+// nullopt: currentColor, inherit and paints (the style cascade resolves
+// them), and the deprecated system colors, which resvg and librsvg reject too.
 #pragma once
 
 #include "casteljau/paint/color.h"

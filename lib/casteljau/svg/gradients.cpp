@@ -76,25 +76,28 @@ GradientRef GradientIndex::resolve(const std::string& id) {
 GradientRef GradientIndex::build(pugi::xml_node node) {
     GradientRef r;
     r.where = node;
-    // The href chain: cut at a missing target (a warning); a cycle or a chain
-    // beyond the length limit is malformed (an error at the link's element).
+    const auto problem = [&](const pugi::xml_node& n, std::string what) {
+        problems_.push_back({n, std::move(what)});
+    };
+    // The href chain, cut at a missing target, at a link that would close a
+    // cycle, and beyond the length limit.
     std::vector<pugi::xml_node> chain{node};
     std::set<const void*> seen{node.internal_object()};
     while (const char* href = href_of(chain.back())) {
         const auto it = href[0] == '#' ? by_id_.find(href + 1) : by_id_.end();
         if (it == by_id_.end() || !is_gradient(it->second)) {
-            r.warning = std::string("href '") + href + "' names no gradient; ignored";
+            problem(chain.back(), std::string("href '") + href + "' names no gradient; ignored");
             break;
         }
         if (!seen.insert(it->second.internal_object()).second) {
-            r.where = chain.back();
-            return r.error = std::string("href '") + href + "' makes a cycle", r;
+            problem(chain.back(),
+                    std::string("href '") + href + "' makes a cycle; the chain ends here");
+            break;
         }
         if (int(chain.size()) >= kMaxHrefChain) {
-            r.where = chain.back();
-            return r.error = "the href chain is longer than " + std::to_string(kMaxHrefChain) +
-                             " links (the limit)",
-                   r;
+            problem(chain.back(), "the href chain is longer than " + std::to_string(kMaxHrefChain) +
+                                      " links (the limit); it ends here");
+            break;
         }
         chain.push_back(it->second);
     }
@@ -103,14 +106,18 @@ GradientRef GradientIndex::build(pugi::xml_node node) {
             if (const pugi::xml_attribute a = n.attribute(name)) return a;
         return {};
     };
+    const auto invalid = [&](const char* name, const char* instead) {
+        problem(node, std::string(name) + ": '" + attr(name).value() + "' is invalid; " + instead);
+    };
     auto g = std::make_shared<Gradient>();
     g->kind = std::strcmp(node.name(), "radialGradient") == 0 ? Gradient::Kind::Radial
                                                               : Gradient::Kind::Linear;
     if (const pugi::xml_attribute u = attr("gradientUnits")) {
         const std::string v = u.value();
-        if (v != "userSpaceOnUse" && v != "objectBoundingBox")
-            return r.error = "gradientUnits: '" + v + "'", r;
-        g->object_bounding_box = v == "objectBoundingBox";
+        if (v == "userSpaceOnUse" || v == "objectBoundingBox")
+            g->object_bounding_box = v == "objectBoundingBox";
+        else
+            invalid("gradientUnits", "objectBoundingBox is used");
     }
     if (const pugi::xml_attribute s = attr("spreadMethod")) {
         const std::string v = s.value();
@@ -121,27 +128,23 @@ GradientRef GradientIndex::build(pugi::xml_node node) {
         else if (v == "repeat")
             g->spread = Spread::Repeat;
         else
-            return r.error = "spreadMethod: '" + v + "' is not pad, reflect or repeat", r;
+            invalid("spreadMethod", "pad is used");
     }
     if (const pugi::xml_attribute t = attr("gradientTransform")) {
         const TransformResult tr = parse_transform_list(t.value());
-        if (!tr.error.empty()) return r.error = "gradientTransform: " + tr.error, r;
-        g->transform = tr.transform;
+        if (tr.error.empty())
+            g->transform = tr.transform;
+        else
+            problem(node, "gradientTransform: " + tr.error + "; ignored");
     }
     // Coordinates: fractions of the box (percentages too) or user lengths.
     const double diag = std::sqrt((vw_ * vw_ + vh_ * vh_) / 2);
-    const auto coord = [&](const char* name, double fallback,
-                           double user_ref) -> std::optional<double> {
+    const auto get = [&](const char* name, double fallback, double user_ref) {
         const pugi::xml_attribute a = attr(name);
         if (!a) return fallback;
-        return parse_length(a.value(), g->object_bounding_box ? 1.0 : user_ref);
-    };
-    std::string bad;
-    const auto get = [&](const char* name, double fallback, double ref) {
-        const auto v = coord(name, fallback, ref);
-        if (!v && bad.empty())
-            bad = std::string(name) + ": '" + attr(name).value() + "' is not a length";
-        return v.value_or(0);
+        const auto v = parse_length(a.value(), g->object_bounding_box ? 1.0 : user_ref);
+        if (!v) invalid(name, "its initial value is used");
+        return v.value_or(fallback);
     };
     const double w = g->object_bounding_box ? 1 : vw_, h = g->object_bounding_box ? 1 : vh_;
     const double d = g->object_bounding_box ? 1 : diag;
@@ -151,32 +154,15 @@ GradientRef GradientIndex::build(pugi::xml_node node) {
     } else {
         g->center = {get("cx", 0.5 * w, vw_), get("cy", 0.5 * h, vh_)};
         g->radius = get("r", 0.5 * d, diag);
+        if (g->radius < 0) {
+            invalid("r", "a negative radius is an error; 50% is used");
+            g->radius = 0.5 * d;
+        }
         g->focal = {get("fx", g->center.x, vw_), get("fy", g->center.y, vh_)};
-        if (g->radius < 0) bad = "r: negative radius";
     }
-    if (!bad.empty()) return r.error = bad, r;
     // Stops from the first gradient of the chain that has any.
     for (const pugi::xml_node& n : chain) {
-        for (const pugi::xml_node& s : n.children("stop")) {
-            GradientStop stop;
-            std::string off = s.attribute("offset").value();
-            const auto v = parse_length(off.empty() ? "0" : off, 1.0);
-            if (!v) return r.where = s, r.error = "offset: '" + off + "' is not a number", r;
-            stop.offset = float(std::clamp(*v, 0.0, 1.0));
-            if (!g->stops.empty()) stop.offset = std::max(stop.offset, g->stops.back().offset);
-            std::string color = style_value(s, "stop-color");
-            if (color.empty()) color = s.attribute("stop-color").as_string("black");
-            std::string opacity = style_value(s, "stop-opacity");
-            if (opacity.empty()) opacity = s.attribute("stop-opacity").as_string("1");
-            const auto c = parse_color(color);
-            const auto o = parse_length(opacity);
-            if (!c) return r.where = s, r.error = "stop-color: '" + color + "' is not a color", r;
-            if (!o)
-                return r.where = s, r.error = "stop-opacity: '" + opacity + "' is not a number", r;
-            stop.color = *c;
-            stop.color.a *= float(std::clamp(*o, 0.0, 1.0));
-            g->stops.push_back(stop);
-        }
+        for (const pugi::xml_node& s : n.children("stop")) g->stops.push_back(stop(s, g->stops));
         if (!g->stops.empty()) break;
     }
     if (g->stops.empty())
@@ -184,6 +170,29 @@ GradientRef GradientIndex::build(pugi::xml_node node) {
     else
         r.gradient = std::move(g);
     return r;
+}
+
+// One <stop>: an invalid offset is 0, an invalid stop-color black and an
+// invalid stop-opacity 1 (their initial values).
+GradientStop GradientIndex::stop(const pugi::xml_node& s, const std::vector<GradientStop>& before) {
+    const auto problem = [&](std::string what) { problems_.push_back({s, std::move(what)}); };
+    GradientStop stop;
+    const std::string off = s.attribute("offset").value();
+    const auto v = parse_length(off.empty() ? "0" : off, 1.0);
+    if (!v) problem("offset: '" + off + "' is not a number; 0 is used");
+    stop.offset = float(std::clamp(v.value_or(0), 0.0, 1.0));
+    if (!before.empty()) stop.offset = std::max(stop.offset, before.back().offset);
+    std::string color = style_value(s, "stop-color");
+    if (color.empty()) color = s.attribute("stop-color").as_string("black");
+    std::string opacity = style_value(s, "stop-opacity");
+    if (opacity.empty()) opacity = s.attribute("stop-opacity").as_string("1");
+    const auto c = parse_color(color);
+    if (!c) problem("stop-color: '" + color + "' is not a color; black is used");
+    const auto o = parse_length(opacity, 1.0); // 50% is 0.5
+    if (!o) problem("stop-opacity: '" + opacity + "' is not a number; 1 is used");
+    stop.color = c.value_or(Rgba{0, 0, 0, 1});
+    stop.color.a *= float(std::clamp(o.value_or(1), 0.0, 1.0));
+    return stop;
 }
 
 } // namespace casteljau::svg_detail

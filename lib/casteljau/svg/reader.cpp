@@ -6,6 +6,7 @@
 #include "casteljau/svg/shapes.h"
 #include "casteljau/svg/style.h"
 #include "casteljau/svg/transform_list.h"
+#include "casteljau/svg/viewport.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,9 +14,12 @@
 #include <cstring>
 #include <pugixml.hpp>
 #include <set>
-#include <sstream>
 
 namespace casteljau {
+
+std::string SvgDiagnostic::text() const {
+    return file + ":" + std::to_string(line) + ": <" + element + ">: " + message;
+}
 
 namespace {
 
@@ -26,7 +30,23 @@ struct Failure {
 // Elements that are never rendered by themselves: skipped without a warning.
 bool silently_skipped(std::string_view n) {
     return n == "title" || n == "desc" || n == "metadata" || n == "defs" || n == "linearGradient" ||
-           n == "radialGradient";
+           n == "radialGradient" || n == "stop" || n == "script";
+}
+
+// SVG elements that change what a file shows and that this reader does not
+// draw yet: skipped with a warning. Any other element is unknown to SVG, and
+// an unknown element is not rendered (SVG 2, 5.x "unknown elements"): no
+// warning.
+bool unsupported(std::string_view n) {
+    static const std::set<std::string_view> names = {
+        "use",  "symbol", "svg",     "switch", "image", "text",         "clipPath",
+        "mask", "marker", "pattern", "filter", "style", "foreignObject"};
+    return names.count(n) != 0;
+}
+
+bool is_shape(std::string_view n) {
+    return n == "path" || n == "rect" || n == "circle" || n == "ellipse" || n == "line" ||
+           n == "polyline" || n == "polygon";
 }
 
 class Reader {
@@ -55,98 +75,96 @@ class Reader {
                    newlines_.begin()) +
                1;
     }
-    std::string where(const pugi::xml_node& n) const {
-        return name_ + ":" + std::to_string(line_of(n.offset_debug())) + ": <" + n.name() + ">";
+    SvgDiagnostic located(const pugi::xml_node& n, const std::string& what) const {
+        return {name_, line_of(n.offset_debug()), n.name(), what};
     }
     [[noreturn]] void fail(const pugi::xml_node& n, const std::string& what) const {
-        throw Failure{where(n) + ": " + what};
+        throw Failure{located(n, what).text()};
+    }
+    [[noreturn]] void fail_at(std::ptrdiff_t offset, const std::string& what) const {
+        throw Failure{name_ + ":" + std::to_string(line_of(offset)) + ": " + what};
     }
     void warn(const pugi::xml_node& n, const std::string& what) {
-        warnings_.push_back(where(n) + ": " + what);
+        warnings_.push_back(located(n, what));
     }
-    void warn_once(const pugi::xml_node& n, const std::string& what) {
-        if (warned_.insert(what).second) warn(n, what);
+    // A problem the spec says how to recover from: a warning, and the caller
+    // recovers; with `strict`, the error that ends the read.
+    void problem(const pugi::xml_node& n, const std::string& what) {
+        if (options_.strict) fail(n, what);
+        warn(n, what);
     }
 
-    double length(const pugi::xml_node& n, const char* attr, double fallback, double percent_of,
-                  bool non_negative = false) const {
+    LengthContext context(const StyleState& s) const {
+        return {s.font_size, root_font_size_, vw_, vh_};
+    }
+
+    // A length attribute; nullopt when absent, auto, or invalid (a problem).
+    std::optional<double> length(const pugi::xml_node& n, const char* attr, double percent_of,
+                                 const LengthContext& ctx) {
         const pugi::xml_attribute a = n.attribute(attr);
-        if (!a) return fallback;
-        const auto v = parse_length(a.value(), percent_of);
+        if (!a || std::strcmp(a.value(), "auto") == 0) return std::nullopt;
+        const auto v = parse_length(a.value(), percent_of, ctx);
         if (!v)
-            fail(n,
-                 std::string("attribute ") + attr + ": '" + a.value() + "' is not a finite length");
-        if (non_negative && *v < 0)
-            fail(n, std::string("attribute ") + attr + ": " + a.value() + " is negative");
-        return *v;
+            problem(n, std::string("attribute ") + attr + ": '" + a.value() +
+                           "' is not a length; ignored");
+        return v;
     }
 
     Scene read() {
         pugi::xml_document doc;
         const pugi::xml_parse_result res =
             doc.load_buffer(text_.data(), text_.size(), pugi::parse_default | pugi::parse_doctype);
-        if (!res)
-            throw Failure{name_ + ":" + std::to_string(line_of(res.offset)) +
-                          ": malformed XML: " + res.description()};
+        if (!res) fail_at(res.offset, std::string("malformed XML: ") + res.description());
         // pugixml never expands entities nor fetches a DTD; a document that
         // declares entities is refused rather than read without them
         // (entity bombs, external entities).
         for (const pugi::xml_node& n : doc.children())
             if (n.type() == pugi::node_doctype && std::strstr(n.value(), "<!ENTITY"))
-                throw Failure{name_ + ":" + std::to_string(line_of(n.offset_debug())) +
-                              ": <!DOCTYPE>: entity declarations are not supported"};
+                fail_at(n.offset_debug(), "<!DOCTYPE>: entity declarations are not supported");
         const pugi::xml_node root = doc.document_element();
         if (std::strcmp(root.name(), "svg") != 0)
-            throw Failure{name_ + ":" + std::to_string(line_of(root.offset_debug())) +
-                          ": the root element is <" + root.name() + ">, not <svg>"};
+            fail_at(root.offset_debug(),
+                    std::string("the root element is <") + root.name() + ">, not <svg>");
         Scene scene;
-        const Affine view = viewport(root, scene);
         StyleState style;
+        // The root's font-size first: it is what rem means, and its own
+        // lengths (width="20em") and the viewport depend on it.
+        apply_declarations(root, style, style, nullptr, {});
+        root_font_size_ = style.font_size;
+        const std::optional<Affine> view = viewport(root, scene, context(style));
         ElementProps props;
-        apply_attributes(root, style, style, props);
-        walk(root, style, view, scene.root, 1);
-        scene.root.opacity = 1;
+        apply_declarations(root, style, style, &props, context(style));
+        if (!view) return scene; // a zero-sized viewBox: nothing is drawn
+        walk(root, style, *view, scene.root, 1);
         if (props.opacity < 1)
             scene.root = Group{1, {Node{Group{props.opacity, std::move(scene.root.children)}}}};
         return scene;
     }
 
-    // Root width/height and the viewBox mapping (SVG 1.1, 7.7 and 7.8).
-    Affine viewport(const pugi::xml_node& root, Scene& scene) {
-        double vb[4] = {0, 0, 0, 0};
-        const pugi::xml_attribute box = root.attribute("viewBox");
-        if (box) {
-            std::string tok;
-            int n = 0;
-            std::string s = box.value();
-            std::replace(s.begin(), s.end(), ',', ' ');
-            std::istringstream words(s);
-            while (words >> tok) {
-                const auto v = parse_length(tok);
-                if (!v || n == 4)
-                    fail(root, "viewBox: '" + std::string(box.value()) + "' is not four numbers");
-                vb[n++] = *v;
-            }
-            if (n != 4)
-                fail(root, "viewBox: '" + std::string(box.value()) + "' is not four numbers");
-            if (!(vb[2] > 0 && vb[3] > 0)) fail(root, "viewBox: width and height must be positive");
+    // The root's width and height: an absolute length, or (absent, auto or
+    // a percentage) that fraction of the viewBox's size, or of 100 x 100
+    // without a viewBox (resvg's default; a standalone file has no
+    // containing block). Then the viewBox mapping (SVG 1.1, 7.7 and 7.8).
+    // Nothing to draw (nullopt) when the viewBox is zero-sized.
+    std::optional<Affine> viewport(const pugi::xml_node& root, Scene& scene,
+                                   const LengthContext& ctx) {
+        std::optional<ViewBox> box;
+        if (const pugi::xml_attribute a = root.attribute("viewBox")) {
+            ViewBoxResult vb = parse_view_box(a.value());
+            if (!vb.error.empty()) problem(root, vb.error);
+            box = vb.box;
         }
         const auto side = [&](const char* attr, double from_box) {
-            const pugi::xml_attribute a = root.attribute(attr);
-            const std::string v = a ? a.value() : "";
-            if (!a || (!v.empty() && v.back() == '%')) {
-                if (!box)
-                    fail(root, std::string("no ") + attr + " and no viewBox: the size is unknown");
-                return from_box;
-            }
-            const auto len = parse_length(v);
-            if (!len)
-                fail(root,
-                     std::string("attribute ") + attr + ": '" + v + "' is not a finite length");
-            return *len;
+            const double full = box ? from_box : 100;
+            std::string v = root.attribute(attr).value();
+            if (v.empty() || v == "auto") return full;
+            if (const auto len = parse_length(v, full, ctx)) return *len;
+            problem(root,
+                    std::string("attribute ") + attr + ": '" + v + "' is not a length; ignored");
+            return full;
         };
-        scene.width = side("width", vb[2]);
-        scene.height = side("height", vb[3]);
+        scene.width = side("width", box ? box->w : 0);
+        scene.height = side("height", box ? box->h : 0);
         for (const double d : {scene.width, scene.height}) {
             char size[32]; // "%g": 1e+308, not its 309 digits
             std::snprintf(size, sizeof size, "%g", d);
@@ -156,67 +174,56 @@ class Reader {
                 fail(root, std::string("the document size ") + size + " px exceeds the limit of " +
                                std::to_string(int(options_.max_size)) + " px");
         }
-        vw_ = box ? vb[2] : scene.width;
-        vh_ = box ? vb[3] : scene.height;
+        vw_ = box ? box->w : scene.width;
+        vh_ = box ? box->h : scene.height;
         gradients_.emplace(root, vw_, vh_);
         if (!box) return Affine::identity();
-        return view_box_transform(root, scene, vb);
-    }
-
-    Affine view_box_transform(const pugi::xml_node& root, const Scene& scene, const double vb[4]) {
-        std::string align = "xMidYMid";
-        bool slice = false;
-        if (const pugi::xml_attribute a = root.attribute("preserveAspectRatio")) {
-            std::istringstream words(a.value());
-            std::string w;
-            words >> w;
-            if (w == "defer") words >> w;
-            align = w;
-            if (words >> w) {
-                if (w == "slice")
-                    slice = true;
-                else if (w != "meet")
-                    fail(root, "preserveAspectRatio: '" + w + "' is not meet or slice");
-            }
-            static const std::set<std::string> valid = {
-                "none",     "xMinYMin", "xMidYMin", "xMaxYMin", "xMinYMid",
-                "xMidYMid", "xMaxYMid", "xMinYMax", "xMidYMax", "xMaxYMax"};
-            if (!valid.count(align))
-                fail(root, "preserveAspectRatio: '" + align + "' is not an alignment");
+        if (box->w == 0 || box->h == 0) {
+            warn(root, "viewBox: a zero width or height disables rendering");
+            return std::nullopt;
         }
-        double sx = scene.width / vb[2], sy = scene.height / vb[3];
-        if (align == "none") return Affine::scale(sx, sy) * Affine::translate({-vb[0], -vb[1]});
-        const double s = slice ? std::max(sx, sy) : std::min(sx, sy);
-        const auto offset = [&](char where, double avail, double used) {
-            return where == 'n' ? 0.0 : (where == 'd' ? (avail - used) / 2 : avail - used);
+        AspectRatio ar;
+        if (const pugi::xml_attribute a = root.attribute("preserveAspectRatio")) {
+            if (const auto parsed = parse_aspect_ratio(a.value()))
+                ar = *parsed;
+            else
+                problem(root, std::string("preserveAspectRatio: '") + a.value() +
+                                  "' is invalid; xMidYMid meet is used");
+        }
+        return view_box_transform(*box, ar, 0, 0, scene.width, scene.height);
+    }
+
+    void check_length_limit(const pugi::xml_node& n, const pugi::xml_attribute& a) const {
+        if (const std::size_t len = std::strlen(a.value()); len > options_.max_attribute_bytes)
+            fail(n, std::string("attribute ") + a.name() + " is " + std::to_string(len) +
+                        " bytes, over the limit of " +
+                        std::to_string(options_.max_attribute_bytes) + " bytes");
+    }
+
+    // The element's presentation attributes, then its style attribute's
+    // declarations (which win, 6.4). Without `props`, only font-size: the
+    // first of two passes, since every other length may be in em. An
+    // invalid value is a problem, and the property keeps what it had.
+    void apply_declarations(const pugi::xml_node& n, const StyleState& parent, StyleState& style,
+                            ElementProps* props, const LengthContext& ctx) {
+        ElementProps unused;
+        const auto apply = [&](std::string_view name, std::string_view value, bool in_style) {
+            if ((name == "font-size") == (props != nullptr)) return;
+            const std::string e =
+                apply_property(name, value, parent, style, props ? *props : unused, ctx);
+            if (!e.empty()) problem(n, (in_style ? "style: " : "") + e + "; ignored");
         };
-        // align is x{Min,Mid,Max}Y{Min,Mid,Max}: the letters at 3 and 7 (n, d, x) tell which.
-        const double tx = offset(align[3], scene.width, vb[2] * s),
-                     ty = offset(align[7], scene.height, vb[3] * s);
-        return Affine::translate({tx, ty}) * Affine::scale(s) * Affine::translate({-vb[0], -vb[1]});
-    }
-
-    // Bad path data or point list: an error, or (partial_path_data) a warning
-    // and the shape up to the error.
-    void bad_data(const pugi::xml_node& n, const std::string& what) {
-        if (!options_.partial_path_data) fail(n, what);
-        warn(n, what + " (drawn up to there)");
-    }
-
-    void apply_attributes(const pugi::xml_node& n, const StyleState& parent, StyleState& style,
-                          ElementProps& props) {
         for (const pugi::xml_attribute& a : n.attributes()) {
-            if (const std::size_t len = std::strlen(a.value()); len > options_.max_attribute_bytes)
-                fail(n, std::string("attribute ") + a.name() + " is " + std::to_string(len) +
-                            " bytes, over the limit of " +
-                            std::to_string(options_.max_attribute_bytes) + " bytes");
-            if (std::strcmp(a.name(), "style") == 0) continue;
-            const std::string e = apply_property(a.name(), a.value(), parent, style, props);
-            if (!e.empty()) fail(n, e);
+            if (!props) check_length_limit(n, a);
+            if (std::strcmp(a.name(), "style") != 0) apply(a.name(), a.value(), false);
         }
         if (const pugi::xml_attribute a = n.attribute("style")) {
-            const std::string e = apply_style_attribute(a.value(), parent, style, props);
-            if (!e.empty()) fail(n, e);
+            std::vector<std::string_view> malformed;
+            for (const Declaration& d : split_style_attribute(a.value(), malformed))
+                apply(d.name, d.value, true);
+            if (props)
+                for (const std::string_view m : malformed)
+                    problem(n, "style: '" + std::string(m) + "' is not a declaration; ignored");
         }
     }
 
@@ -235,18 +242,21 @@ class Reader {
                 continue; // foreign namespaces
             const bool group = name == "g" || name == "a";
             if (!group && !is_shape(name)) {
-                warn(n, "unsupported element skipped");
+                if (unsupported(name)) warn(n, "not supported yet; skipped");
                 continue;
             }
             StyleState style = parent_style;
             ElementProps props;
-            apply_attributes(n, parent_style, style, props);
+            apply_declarations(n, parent_style, style, nullptr, context(parent_style));
+            apply_declarations(n, parent_style, style, &props, context(style));
             if (props.display_none) continue;
             Affine m = ctm;
             if (const pugi::xml_attribute t = n.attribute("transform")) {
                 const TransformResult tr = parse_transform_list(t.value());
-                if (!tr.error.empty()) fail(n, "transform: " + tr.error);
-                m = ctm * tr.transform;
+                if (tr.error.empty())
+                    m = ctm * tr.transform;
+                else
+                    problem(n, "transform: " + tr.error + "; ignored");
             }
             if (group) {
                 Group g{props.opacity, {}};
@@ -263,15 +273,10 @@ class Reader {
         }
     }
 
-    static bool is_shape(std::string_view n) {
-        return n == "path" || n == "rect" || n == "circle" || n == "ellipse" || n == "line" ||
-               n == "polyline" || n == "polygon";
-    }
-
     std::optional<Shape> shape(const pugi::xml_node& n, std::string_view name,
                                const StyleState& style, const Affine& m,
                                const ElementProps& props) {
-        Path path = geometry(n, name);
+        Path path = geometry(n, name, context(style));
         if (!style.visible || path.empty()) return std::nullopt;
         Shape s;
         s.path = std::move(path);
@@ -295,57 +300,84 @@ class Reader {
                                        const StyleState& style) {
         if (spec.from_url) {
             const svg_detail::GradientRef g = gradients_->resolve(spec.url);
-            if (!g.error.empty()) fail(g.where, g.error);
-            if (!g.warning.empty()) warn_once(g.where ? g.where : n, g.warning);
+            for (const svg_detail::GradientProblem& p : gradients_->take_problems())
+                problem(p.where, p.message);
+            if (!g.warning.empty() && warned_.insert(g.warning).second)
+                warn(g.where ? g.where : n, g.warning);
             if (g.gradient) return ResolvedPaint{{}, g.gradient};
         }
         if (const auto c = resolve_paint(spec, style)) return ResolvedPaint{*c, nullptr};
         return std::nullopt;
     }
 
-    Path geometry(const pugi::xml_node& n, std::string_view name) {
+    // A required length that must not be negative: nullopt, and the element
+    // is not drawn, when it is (SVG 1.1, 9: "a negative value is an error").
+    std::optional<double> non_negative(const pugi::xml_node& n, const char* attr,
+                                       std::optional<double> v) {
+        if (v && *v < 0) {
+            problem(n, std::string("attribute ") + attr +
+                           ": a negative value is an error; the element is not drawn");
+            return std::nullopt;
+        }
+        return v ? v : 0.0;
+    }
+
+    Path geometry(const pugi::xml_node& n, std::string_view name, const LengthContext& ctx) {
         if (name == "path") {
             PathDataResult r = parse_path_data(n.attribute("d").value());
             if (r.error)
-                bad_data(n, "attribute d: path data: at offset " + std::to_string(r.error->offset) +
-                                ": " + r.error->message);
+                problem(n, "attribute d: path data: at offset " + std::to_string(r.error->offset) +
+                               ": " + r.error->message + " (drawn up to there)");
             return std::move(r.path);
+        }
+        if (name == "polyline" || name == "polygon") {
+            PointList pts = parse_point_list(n.attribute("points").value());
+            if (!pts.error.empty()) problem(n, "attribute " + pts.error + " (drawn up to there)");
+            if (pts.points.size() < 2) return {};
+            return poly_path(pts.points, name == "polygon");
         }
         // Percentages of the viewport: x against its width, y against its
         // height, radii against its normalised diagonal (SVG 1.1, 7.10).
-        const double w = vw_, h = vh_, d = std::sqrt((w * w + h * h) / 2);
+        const double w = vw_, h = vh_, d = ctx.diagonal();
+        const auto len = [&](const char* attr, double percent_of) {
+            return length(n, attr, percent_of, ctx);
+        };
+        const auto at = [&](const char* attr, double percent_of) {
+            return len(attr, percent_of).value_or(0);
+        };
+        if (name == "line")
+            return line_path({at("x1", w), at("y1", h)}, {at("x2", w), at("y2", h)});
         if (name == "rect") {
-            const double rw = length(n, "width", 0, w, true), rh = length(n, "height", 0, h, true);
-            if (rw == 0 || rh == 0) return {};
-            return rect_path(length(n, "x", 0, w), length(n, "y", 0, h), rw, rh,
-                             length(n, "rx", -1, w, true), length(n, "ry", -1, h, true));
+            const auto rw = non_negative(n, "width", len("width", w));
+            const auto rh = non_negative(n, "height", len("height", h));
+            // rx, ry: absent or auto (-1) take the other's value (9.2).
+            const auto rx = len("rx", w), ry = len("ry", h);
+            if (!rw || !rh || !non_negative(n, "rx", rx) || !non_negative(n, "ry", ry)) return {};
+            if (*rw == 0 || *rh == 0) return {};
+            return rect_path(at("x", w), at("y", h), *rw, *rh, rx.value_or(-1), ry.value_or(-1));
         }
         if (name == "circle") {
-            const double r = length(n, "r", 0, d, true);
-            return r == 0 ? Path{}
-                          : ellipse_path(length(n, "cx", 0, w), length(n, "cy", 0, h), r, r);
+            const auto r = non_negative(n, "r", len("r", d));
+            if (!r || *r == 0) return {};
+            return ellipse_path(at("cx", w), at("cy", h), *r, *r);
         }
-        if (name == "ellipse") {
-            const double rx = length(n, "rx", 0, w, true), ry = length(n, "ry", 0, h, true);
-            return rx == 0 || ry == 0
-                       ? Path{}
-                       : ellipse_path(length(n, "cx", 0, w), length(n, "cy", 0, h), rx, ry);
-        }
-        if (name == "line")
-            return line_path({length(n, "x1", 0, w), length(n, "y1", 0, h)},
-                             {length(n, "x2", 0, w), length(n, "y2", 0, h)});
-        PointList pts = parse_point_list(n.attribute("points").value());
-        if (!pts.error.empty()) bad_data(n, "attribute points: " + pts.error);
-        return poly_path(pts.points, name == "polygon");
+        // ellipse: an absent or auto radius takes the other's (SVG 2, 10.4).
+        auto rx = len("rx", w), ry = len("ry", h);
+        if (!rx) rx = ry;
+        if (!ry) ry = rx;
+        if (!non_negative(n, "rx", rx) || !non_negative(n, "ry", ry) || !rx || *rx == 0 || *ry == 0)
+            return {};
+        return ellipse_path(at("cx", w), at("cy", h), *rx, *ry);
     }
 
     std::string_view text_;
     std::string name_;
     SvgOptions options_;
     std::vector<std::size_t> newlines_;
-    std::vector<std::string> warnings_;
+    std::vector<SvgDiagnostic> warnings_;
     std::set<std::string> warned_;
     std::size_t elements_ = 0;
+    double root_font_size_ = 16;
     double vw_ = 0, vh_ = 0; // viewport size in user units, for percentages
     std::optional<svg_detail::GradientIndex> gradients_;
 };

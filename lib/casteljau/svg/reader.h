@@ -1,15 +1,21 @@
 // The SVG reader: an SVG file (the subset of DESIGN.md) -> Scene.
 //
-// Errors name the file, the line and the element ("in.svg:12: <rect>:
-// attribute width: 'abc' is not a length"); XML errors come from pugixml with
-// their offset turned into a line. Malformed values are errors, bad path data
-// and point lists included (DESIGN.md: "anything malformed is an error");
-// with `partial_path_data` they follow SVG 1.1 appendix F.2 instead, as
-// browsers do: the path is drawn up to the error, with a warning.
-// Unsupported elements are skipped with a warning each.
-// No DTD is processed, so no entity is ever expanded and no external
-// reference is ever followed; a DOCTYPE that declares entities (an expansion
-// bomb, an external entity) is an error, a plain one is ignored.
+// Errors are handled as SVG 2 and CSS specify, as browsers, resvg and
+// librsvg do: an invalid attribute or property value is ignored (the
+// property keeps its inherited or initial value: CSS Syntax 3; SVG 2,
+// 6.9 "Presentation attributes"); path data and point lists are drawn up to
+// their first error (SVG 2, 9.5.4; SVG 1.1 F.2); an element whose required
+// value is in error (a negative width or radius) is not drawn; a broken
+// reference falls back as the property says. Each such problem is one
+// warning, located (file, line, element). Unknown elements and attributes
+// are ignored; known elements this reader does not draw yet are skipped
+// with a warning. With `strict`, the first problem is an error instead.
+//
+// Only a file that cannot be drawn at all is an error: not well-formed XML,
+// a root that is not <svg>, an unusable size, or a limit exceeded. No DTD is
+// processed, so no entity is ever expanded and no external reference is ever
+// followed; a DOCTYPE that declares entities (an expansion bomb, an external
+// entity) is an error, a plain one is ignored.
 //
 // Limits (SvgOptions): file size, element count, nesting depth, attribute
 // length and document size are checked before the work they bound.
@@ -33,16 +39,28 @@ struct SvgOptions {
     /// Any one attribute: 32 MiB holds a million path segments ("L1234.5
     /// 678.9" is 14 bytes, an absolute cubic about 40).
     std::size_t max_attribute_bytes = std::size_t(32) << 20;
-    double max_size = 16384;        ///< document width and height, px
-    bool partial_path_data = false; ///< draw bad path data up to the error (F.2), warning
+    double max_size = 16384; ///< document width and height, px
+    /// The first problem in the input is an error (no image), instead of a
+    /// warning and the spec's recovery.
+    bool strict = false;
+};
+
+/// A located message about the input.
+struct SvgDiagnostic {
+    std::string file;
+    int line = 0;        ///< 1-based line of the element
+    std::string element; ///< its name, without brackets
+    std::string message; ///< what is wrong, and what was done about it
+    /// "file:line: <element>: message", the form every message takes.
+    std::string text() const;
 };
 
 /// A read SVG document: the scene, or a located error.
 struct SvgResult {
-    std::optional<Scene> scene; ///< empty on error
-    std::string error;          ///< "file:line: <element>: what"
-    bool io_error = false;      ///< the file could not be read (not its content)
-    std::vector<std::string> warnings;
+    std::optional<Scene> scene;          ///< empty on error
+    std::string error;                   ///< "file:line: <element>: what"
+    bool io_error = false;               ///< the file could not be read (not its content)
+    std::vector<SvgDiagnostic> warnings; ///< the problems recovered from, in document order
 };
 
 SvgResult read_svg_file(const std::string& path, const SvgOptions& options = {});

@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cmath>
 #include <initializer_list>
+#include <string>
 #include <utility>
 
 namespace casteljau {
@@ -19,24 +20,17 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
-std::optional<double> parse_number(std::string_view s, std::string_view* rest = nullptr) {
-    s = trim(s);
-    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-    double v;
-    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-    if (ec != std::errc() || !std::isfinite(v)) return std::nullopt;
-    const std::string_view tail = s.substr(std::size_t(end - s.data()));
-    if (rest)
-        *rest = tail;
-    else if (!trim(tail).empty())
-        return std::nullopt;
-    return v;
+bool iequals(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
+           });
 }
 
 std::optional<PaintSpec> parse_paint(std::string_view v) {
     v = trim(v);
     if (v == "none") return PaintSpec{PaintSpec::Kind::None, {}, false, {}};
-    if (v == "currentColor") return PaintSpec{PaintSpec::Kind::CurrentColor, {}, false, {}};
+    if (iequals(v, "currentColor")) return PaintSpec{PaintSpec::Kind::CurrentColor, {}, false, {}};
     if (v.rfind("url(", 0) == 0) {
         const std::size_t close = v.find(')');
         if (close == v.npos) return std::nullopt;
@@ -68,14 +62,14 @@ std::optional<float> parse_opacity(std::string_view v) {
     return float(std::clamp(*n, 0.0, 1.0));
 }
 
-std::optional<std::vector<double>> parse_dashes(std::string_view v) {
+std::optional<std::vector<double>> parse_dashes(std::string_view v, const LengthContext& ctx) {
     std::vector<double> out;
     if (trim(v) == "none") return out;
     std::string token;
     for (std::size_t i = 0; i <= v.size(); ++i) {
         if (i == v.size() || v[i] == ',' || std::isspace(static_cast<unsigned char>(v[i]))) {
             if (!token.empty()) {
-                const auto d = parse_length(token);
+                const auto d = parse_length(token, ctx.diagonal(), ctx);
                 if (!d || *d < 0) return std::nullopt;
                 out.push_back(*d);
                 token.clear();
@@ -107,36 +101,83 @@ std::optional<double> at_least(std::optional<double> v, double min) {
 
 } // namespace
 
-std::optional<double> parse_length(std::string_view text, double percent_of) {
+std::optional<double> parse_number(std::string_view s, std::string_view* rest) {
+    s = trim(s);
+    if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+    double v;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || !std::isfinite(v)) return std::nullopt;
+    const std::string_view tail = s.substr(std::size_t(end - s.data()));
+    if (rest)
+        *rest = tail;
+    else if (!trim(tail).empty())
+        return std::nullopt;
+    return v;
+}
+
+double LengthContext::diagonal() const {
+    return std::sqrt((viewport_w * viewport_w + viewport_h * viewport_h) / 2);
+}
+
+std::optional<double> parse_length(std::string_view text, double percent_of,
+                                   const LengthContext& ctx) {
     std::string_view unit;
     const auto v = parse_number(text, &unit);
     if (!v) return std::nullopt;
-    unit = trim(unit);
-    // CSS absolute units at 96 px per inch; em and ex at the initial font
-    // size of 16 px (font properties are outside the supported subset).
-    double k = 1;
-    if (unit.empty() || unit == "px")
-        k = 1;
-    else if (unit == "pt")
-        k = 96.0 / 72;
-    else if (unit == "pc")
-        k = 16;
-    else if (unit == "mm")
-        k = 96 / 25.4;
-    else if (unit == "cm")
-        k = 96 / 2.54;
-    else if (unit == "in")
-        k = 96;
-    else if (unit == "em")
-        k = 16;
-    else if (unit == "ex")
-        k = 8;
-    else if (unit == "%")
-        k = percent_of / 100;
-    else
+    // The unit follows the number directly: "1 px" is not a length.
+    if (const std::string_view t = trim(unit); !t.empty() && t.data() != unit.data())
         return std::nullopt;
-    return *v * k;
+    unit = trim(unit);
+    std::string u(unit);
+    std::transform(u.begin(), u.end(), u.begin(), [](unsigned char c) { return std::tolower(c); });
+    const double em = ctx.font_size;
+    const double vw = ctx.viewport_w / 100, vh = ctx.viewport_h / 100;
+    // CSS absolute units at 96 px per inch (CSS Values 3, 6.2).
+    const std::pair<std::string_view, double> units[] = {{"", 1},
+                                                         {"px", 1},
+                                                         {"in", 96},
+                                                         {"cm", 96 / 2.54},
+                                                         {"mm", 96 / 25.4},
+                                                         {"q", 96 / 101.6},
+                                                         {"pt", 96.0 / 72},
+                                                         {"pc", 16},
+                                                         {"em", em},
+                                                         {"ex", em / 2},
+                                                         {"ch", em / 2},
+                                                         {"rem", ctx.root_font_size},
+                                                         {"%", percent_of / 100},
+                                                         {"vw", vw},
+                                                         {"vh", vh},
+                                                         {"vmin", std::min(vw, vh)},
+                                                         {"vmax", std::max(vw, vh)}};
+    for (const auto& [name, k] : units)
+        if (u == name) {
+            const double r = *v * k;
+            return std::isfinite(r) ? std::optional<double>(r) : std::nullopt;
+        }
+    return std::nullopt;
 }
+
+namespace {
+
+// font-size (CSS Fonts 4, 2.5): a keyword of the absolute-size scale (medium
+// is the initial 16 px), larger or smaller (a factor of 1.2, as browsers
+// step), or a non-negative length; em and % against the parent's size.
+std::optional<double> parse_font_size(std::string_view v, double parent, const LengthContext& ctx) {
+    const std::pair<std::string_view, double> keywords[] = {
+        {"xx-small", 16 * 3.0 / 5}, {"x-small", 16 * 3.0 / 4},
+        {"small", 16 * 8.0 / 9},    {"medium", 16},
+        {"large", 16 * 6.0 / 5},    {"x-large", 16 * 3.0 / 2},
+        {"xx-large", 16 * 2.0},     {"xxx-large", 16 * 3.0},
+        {"larger", parent * 1.2},   {"smaller", parent / 1.2}};
+    for (const auto& [word, px] : keywords)
+        if (v == word) return px;
+    LengthContext of_parent = ctx;
+    of_parent.font_size = parent;
+    return at_least(parse_length(v, parent, of_parent), 0);
+}
+
+} // namespace
 
 std::optional<Rgba> resolve_paint(const PaintSpec& p, const StyleState& s) {
     switch (p.kind) {
@@ -151,7 +192,7 @@ std::optional<Rgba> resolve_paint(const PaintSpec& p, const StyleState& s) {
 }
 
 std::string apply_property(std::string_view name, std::string_view value, const StyleState& parent,
-                           StyleState& s, ElementProps& props) {
+                           StyleState& s, ElementProps& props, const LengthContext& ctx) {
     value = trim(value);
     const bool inherit = value == "inherit";
     // Every property the same way: `inherit` takes the parent's value, a
@@ -179,15 +220,21 @@ std::string apply_property(std::string_view name, std::string_view value, const 
                    lookup<FillRule>(
                        value, {{"nonzero", FillRule::NonZero}, {"evenodd", FillRule::EvenOdd}}),
                    "nonzero or evenodd");
+    const double diag = ctx.diagonal();
+    if (name == "font-size")
+        return set(s.font_size, parent.font_size, parse_font_size(value, parent.font_size, ctx),
+                   "a font size");
     if (name == "stroke-width")
-        return set(g.width, pg.width, at_least(parse_length(value), 0), "a non-negative length");
+        return set(g.width, pg.width, at_least(parse_length(value, diag, ctx), 0),
+                   "a non-negative length");
     if (name == "stroke-miterlimit")
-        return set(g.miter_limit, pg.miter_limit, at_least(parse_length(value), 1),
+        return set(g.miter_limit, pg.miter_limit, at_least(parse_number(value), 1),
                    "a number >= 1");
     if (name == "stroke-dashoffset")
-        return set(g.dash_offset, pg.dash_offset, parse_length(value), "a length");
+        return set(g.dash_offset, pg.dash_offset, parse_length(value, diag, ctx), "a length");
     if (name == "stroke-dasharray")
-        return set(g.dashes, pg.dashes, parse_dashes(value), "a list of non-negative lengths");
+        return set(g.dashes, pg.dashes, parse_dashes(value, ctx),
+                   "none or a list of non-negative lengths");
     if (name == "stroke-linejoin")
         return set(g.join, pg.join,
                    lookup<LineJoin>(value, {{"miter", LineJoin::Miter},
@@ -204,34 +251,32 @@ std::string apply_property(std::string_view name, std::string_view value, const 
         props.display_none = value == "none";
         return "";
     }
-    if (name == "visibility") {
-        if (inherit)
-            s.visible = parent.visible;
-        else
-            s.visible = value == "visible";
-        return "";
-    }
+    if (name == "visibility")
+        return set(s.visible, parent.visible,
+                   lookup<bool>(value, {{"visible", true}, {"hidden", false}, {"collapse", false}}),
+                   "visible, hidden or collapse");
     return "";
 }
 
-std::string apply_style_attribute(std::string_view css, const StyleState& parent, StyleState& style,
-                                  ElementProps& props) {
+std::vector<Declaration> split_style_attribute(std::string_view css,
+                                               std::vector<std::string_view>& malformed) {
+    std::vector<Declaration> out;
     while (!css.empty()) {
         const std::size_t semi = css.find(';');
-        const std::string_view decl = css.substr(0, semi);
+        const std::string_view decl = trim(css.substr(0, semi));
         css = semi == css.npos ? std::string_view() : css.substr(semi + 1);
+        if (decl.empty()) continue;
         const std::size_t colon = decl.find(':');
-        if (trim(decl).empty()) continue;
-        if (colon == decl.npos)
-            return "style: malformed declaration '" + std::string(trim(decl)) + "'";
+        if (colon == decl.npos || trim(decl.substr(0, colon)).empty()) {
+            malformed.push_back(decl);
+            continue;
+        }
         std::string_view value = trim(decl.substr(colon + 1));
-        if (value.size() > 10 && value.substr(value.size() - 10) == "!important")
+        if (value.size() >= 10 && value.substr(value.size() - 10) == "!important")
             value = trim(value.substr(0, value.size() - 10));
-        const std::string e =
-            apply_property(trim(decl.substr(0, colon)), value, parent, style, props);
-        if (!e.empty()) return e;
+        out.push_back({trim(decl.substr(0, colon)), value});
     }
-    return "";
+    return out;
 }
 
 } // namespace casteljau

@@ -3,11 +3,21 @@
 //
 // Each element starts from its parent's computed values for the inherited
 // properties (fill, fill-opacity, fill-rule, stroke and its relatives, color,
-// visibility) and from the initial values for the others (opacity, display).
-// Presentation attributes are applied first, then the declarations of the
-// `style` attribute, which take precedence (6.4). `inherit` takes the parent's
-// value. Unknown properties are ignored; a malformed value of a known
-// property is an error (the reader reports it with the element and line).
+// font-size, visibility) and from the initial values for the others (opacity,
+// display). Presentation attributes are applied first, then the declarations
+// of the `style` attribute, which take precedence (6.4). `inherit` takes the
+// parent's value. Unknown properties are ignored. An invalid value of a known
+// property is ignored too (CSS Syntax 3, "parse errors": the declaration is
+// dropped, so the property keeps its inherited or initial value); the caller
+// is told what was wrong, to warn (or, strict, to stop).
+//
+// Lengths (CSS Values and Units 3, 5 and 6): px, and the absolute units at
+// 96 px per inch (in, cm, mm, Q, pt, pc); em against the element's font-size
+// (the parent's, for font-size itself), rem against the root's; ex and ch are
+// half an em, the fallback CSS gives when font metrics are not at hand (this
+// reader has no fonts); % against what each property names; vw, vh, vmin and
+// vmax against the nearest viewport in user units, as percentages are (so
+// they scale with the viewBox, as in resvg).
 #pragma once
 
 #include "casteljau/paint/color.h"
@@ -29,6 +39,18 @@ struct PaintSpec {
     std::string url;       ///< the id after '#', when from_url
 };
 
+/// What relative lengths are relative to.
+struct LengthContext {
+    double font_size = 16;      ///< px: em, and ex and ch as half of it
+    double root_font_size = 16; ///< px: rem
+    double viewport_w = 100;    ///< user units: vw, vmin, vmax
+    double viewport_h = 100;    ///< user units: vh, vmin, vmax
+    /// The viewport's normalised diagonal sqrt((w^2 + h^2) / 2): what a
+    /// percentage of a length that is neither horizontal nor vertical (a
+    /// radius, a stroke width) refers to (SVG 1.1, 7.10).
+    double diagonal() const;
+};
+
 /// The computed style properties the cascade carries from parent to child.
 struct StyleState {
     PaintSpec fill{PaintSpec::Kind::Color, {0, 0, 0, 1}, false, {}};
@@ -38,6 +60,7 @@ struct StyleState {
     float stroke_opacity = 1;
     StrokeGeometry stroke_geometry;
     Rgba color{0, 0, 0, 1};
+    double font_size = 16; ///< computed, px (CSS's initial "medium")
     bool visible = true;
 };
 
@@ -48,17 +71,31 @@ struct ElementProps {
 };
 
 /// Applies one property. Returns "" when applied or unknown, otherwise what is
-/// wrong with the value.
+/// wrong with the value (which is then ignored). `ctx` is the element's
+/// (its font_size already computed, see font-size's own rule above).
 std::string apply_property(std::string_view name, std::string_view value, const StyleState& parent,
-                           StyleState& style, ElementProps& props);
+                           StyleState& style, ElementProps& props, const LengthContext& ctx);
 
-/// Splits a `style` attribute into declarations and applies each.
-std::string apply_style_attribute(std::string_view css, const StyleState& parent, StyleState& style,
-                                  ElementProps& props);
+/// One declaration of a `style` attribute: "name: value".
+struct Declaration {
+    std::string_view name, value;
+};
 
-/// A length: a number with an optional unit (px, pt, pc, mm, cm, in, em, ex,
-/// or % of `percent_of`); nullopt when malformed or not finite.
-std::optional<double> parse_length(std::string_view text, double percent_of = 0);
+/// Splits a `style` attribute into its declarations, in order, without
+/// `!important`. A piece without a colon is not a declaration: it is skipped
+/// (CSS drops it) and its text added to `malformed`.
+std::vector<Declaration> split_style_attribute(std::string_view css,
+                                               std::vector<std::string_view>& malformed);
+
+/// A number (CSS's <number>, with an optional leading '+'): nullopt when
+/// malformed or not finite. With `rest`, what follows the number goes there
+/// (a unit, say); without, anything but whitespace after it is an error.
+std::optional<double> parse_number(std::string_view text, std::string_view* rest = nullptr);
+
+/// A length: a number with an optional unit (see above; % of `percent_of`);
+/// nullopt when malformed, not finite, or in an unknown unit.
+std::optional<double> parse_length(std::string_view text, double percent_of = 0,
+                                   const LengthContext& ctx = {});
 
 /// Resolves a paint to a color; nullopt for none.
 std::optional<Rgba> resolve_paint(const PaintSpec& p, const StyleState& s);

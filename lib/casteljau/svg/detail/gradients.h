@@ -4,10 +4,12 @@
 // anywhere in the document. A reference resolves along the href chain
 // (href or xlink:href, SVG 1.1 13.2.2 and 13.2.3): each attribute comes from
 // the first gradient of the chain that has it, the stops from the first that
-// has any. The chain stops at a missing id (with a warning); a cycle or more
-// than kMaxHrefChain links is an error. Stops (13.2.4): offsets are numbers or percentages,
-// clamped to [0, 1] and made nondecreasing; stop-color and stop-opacity come
-// from attributes or the style attribute.
+// has any. The chain stops at a missing id, at a link that would close a
+// cycle and after kMaxHrefChain links: the gradient uses what it has. Stops
+// (13.2.4): offsets are numbers or percentages, clamped to [0, 1] and made
+// nondecreasing; stop-color and stop-opacity come from attributes or the
+// style attribute. An invalid value (an attribute, a stop's) is a problem
+// and takes its initial value, as CSS error handling says.
 #pragma once
 
 #include "casteljau/paint/gradient.h"
@@ -16,6 +18,8 @@
 #include <memory>
 #include <pugixml.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace casteljau::svg_detail {
 
@@ -23,9 +27,15 @@ inline constexpr int kMaxHrefChain = 64;
 
 struct GradientRef {
     std::shared_ptr<const Gradient> gradient; // null: not a gradient, or unusable
-    std::string warning;                      // why, when null or when the chain was cut
-    std::string error;                        // a malformed value: the reader fails
-    pugi::xml_node where;                     // the element the message is about
+    std::string warning;                      // why, when null
+    pugi::xml_node where;                     // the element the warning is about
+};
+
+// An invalid value or a broken chain, recovered from: the reader warns (or,
+// strict, fails).
+struct GradientProblem {
+    pugi::xml_node where;
+    std::string message;
 };
 
 class GradientIndex {
@@ -33,11 +43,15 @@ class GradientIndex {
     // `viewport` sizes resolve percentages of userSpaceOnUse gradients.
     GradientIndex(const pugi::xml_node& root, double viewport_w, double viewport_h);
     GradientRef resolve(const std::string& id);
+    // The problems found since the last call (each gradient is built once).
+    std::vector<GradientProblem> take_problems() { return std::exchange(problems_, {}); }
 
   private:
     GradientRef build(pugi::xml_node node);
+    GradientStop stop(const pugi::xml_node& s, const std::vector<GradientStop>& before);
     std::map<std::string, pugi::xml_node> by_id_;
     std::map<std::string, GradientRef> cache_;
+    std::vector<GradientProblem> problems_;
     double vw_, vh_;
 };
 
