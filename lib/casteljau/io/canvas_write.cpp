@@ -43,7 +43,7 @@ std::string write_canvas_atomic(const std::string& path, const BasicCanvas<Pixel
             dst[0] = c[0], dst[1] = c[1], dst[2] = c[2], dst[3] = std::min(p.a, 1.0f);
         }
     }
-    return write_image_atomic(path, {w, h, out});
+    return write_image_atomic(path, {w, h, out, exr ? Alpha::premultiplied : Alpha::straight});
 }
 
 template std::string write_canvas_atomic(const std::string&, const Canvas&);

@@ -1,10 +1,14 @@
 // Writing a Canvas as an image file, in the encoding its format expects:
 // * 8-bit formats (PNG, JPEG, ...) and TIFF: straight (un-premultiplied)
-//   sRGB-encoded values, the SVG color space; TIFF is written as float.
+//   sRGB-encoded values, the SVG color space; TIFF is written as float and
+//   tagged unassociated alpha. Straight rather than the canvas's
+//   premultiplied values: PNG can only store straight ones, and dividing
+//   here, in float, keeps the precision that dividing 8-bit values would lose.
 // * EXR: scene-linear, premultiplied, float, as OpenEXR files are by
 //   convention (the sRGB transfer function is undone channel by channel).
 // * JPEG has no alpha: the image is flattened onto white first.
-// Writes are atomic (see image_write.h).
+// The image is handed over labelled straight or premultiplied accordingly;
+// writes are atomic (see image_write.h).
 #pragma once
 
 #include "casteljau/paint/canvas.h"

@@ -6,6 +6,7 @@
 #include <OpenImageIO/imageio.h>
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <system_error>
 #include <utility>
 #include <vector>
@@ -19,6 +20,13 @@ namespace {
 bool wants_float(const std::string& ext) {
     return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".EXR" || ext == ".TIF" ||
            ext == ".TIFF";
+}
+
+std::vector<float> premultiplied(std::span<const float> rgba) {
+    std::vector<float> out(rgba.begin(), rgba.end());
+    for (std::size_t i = 0; i + 3 < out.size(); i += 4)
+        for (int c = 0; c < 3; ++c) out[i + std::size_t(c)] *= out[i + 3];
+    return out;
 }
 
 } // namespace
@@ -46,11 +54,18 @@ std::string write_image_atomic(const std::string& path, const ImageView& image) 
     const bool jpeg = ext == ".jpg" || ext == ".jpeg" || ext == ".JPG" || ext == ".JPEG";
     // JPEG has no alpha channel: its three channels are read with a 4-float stride.
     OIIO::ImageSpec spec(image.width, image.height, jpeg ? 3 : 4, type);
-    spec.attribute("oiio:ColorSpace", ext == ".exr" || ext == ".EXR" ? "Linear" : "sRGB");
+    const bool exr = ext == ".exr" || ext == ".EXR";
+    spec.attribute("oiio:ColorSpace", exr ? "Linear" : "sRGB");
+    // Unlabelled, OIIO takes the values as premultiplied: PNG would divide them by alpha.
+    spec.attribute("oiio:UnassociatedAlpha", image.alpha == Alpha::straight ? 1 : 0);
+    // OIIO's EXR writer ignores that label (OpenEXR is premultiplied by definition).
+    std::vector<float> converted;
+    if (exr && image.alpha == Alpha::straight) converted = premultiplied(image.rgba);
+    const float* pixels = converted.empty() ? image.rgba.data() : converted.data();
     std::string error;
     if (!out->open(target.string(), spec)) {
         error = path + ": cannot write: " + out->geterror();
-    } else if (!out->write_image(OIIO::TypeDesc::FLOAT, image.rgba.data(), 4 * sizeof(float))) {
+    } else if (!out->write_image(OIIO::TypeDesc::FLOAT, pixels, 4 * sizeof(float))) {
         error = path + ": write failed: " + out->geterror();
     }
     if (!out->close() && error.empty()) error = path + ": write failed: " + out->geterror();

@@ -7,6 +7,17 @@
 // picks the same writer), which is renamed over the destination only once
 // complete: a failed or interrupted write never leaves a damaged or partial
 // file, and an existing file stays untouched until the new one is whole.
+//
+// The caller states whether the pixels are straight or premultiplied, and the
+// file's alpha is made to agree with that, for every format. OpenImageIO takes
+// a buffer as premultiplied unless told otherwise, and its PNG writer then
+// divides by alpha to store PNG's straight values: straight values must be
+// labelled so, or they are divided twice. (That division comes after rounding
+// to 8 bits, so faint pixels lose their color: give PNG straight values.) TIFF
+// records the convention in its ExtraSamples tag and keeps the values as given.
+// OpenEXR files are premultiplied by definition and OpenImageIO's EXR writer
+// ignores the label, so straight pixels are premultiplied here for EXR. JPEG
+// has no alpha and drops it: flatten the image first.
 #pragma once
 
 #include <span>
@@ -14,12 +25,21 @@
 
 namespace casteljau {
 
+/// How the color channels of an ImageView relate to its alpha.
+enum class Alpha {
+    straight,      ///< color independent of alpha (un-premultiplied), as PNG stores it
+    premultiplied, ///< color already multiplied by alpha, as OpenEXR stores it
+};
+
 /// Float RGBA pixels to write: a view, not owned.
 struct ImageView {
     int width = 0, height = 0;
-    /// width * height RGBA pixels, row-major from the top, un-premultiplied,
-    /// values in [0, 1] already in the output's encoding (sRGB for 8-bit files).
+    /// width * height RGBA pixels, row-major from the top, values in [0, 1]
+    /// already in the output's encoding (sRGB for 8-bit files).
     std::span<const float> rgba;
+    /// What the color values in `rgba` are; the file is labelled (or, for
+    /// EXR, converted) to match.
+    Alpha alpha = Alpha::straight;
 };
 
 /// Returns an empty string on success, otherwise what went wrong (with the path).
