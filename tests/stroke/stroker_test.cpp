@@ -20,6 +20,8 @@
 namespace casteljau {
 namespace {
 
+constexpr double kPi = std::numbers::pi;
+
 StrokeGeometry style(double width, LineCap cap = LineCap::Butt, LineJoin join = LineJoin::Miter) {
     StrokeGeometry s;
     s.width = width;
@@ -104,6 +106,168 @@ TEST(Stroker, OutlineLiesAtHalfWidthFromRandomCurves) {
         }
     }
     EXPECT_GT(checked, 5000);
+}
+
+// Distance from q to the closed polyline (a polygon: closed back to its start).
+double distance_to_polygon(const Polygon& poly, Point q) {
+    double best = 1e300;
+    for (std::size_t i = 0; i < poly.size(); ++i)
+        best = std::min(best, distance_to_segment(q, poly[i], poly[(i + 1) % poly.size()]));
+    return best;
+}
+
+// Issue 21, point 3: handles 1e-4 px long along +x on a curve that is a line
+// at 45 degrees (to within 1e-4 px) were drawn as a parallelogram 0.7x as
+// wide as the stroke, with caps square to +x. Cairo, Skia and resvg draw the
+// band: a rectangle of half-width 10 around (30,150)-(150.0001,30).
+TEST(Stroker, NearDegenerateHandlesKeepTheFullWidth) {
+    const double tol = 0.25, h = 10;
+    const Point a{30, 150}, b{150.0001, 30};
+    std::vector<Polygon> out;
+    stroke_outline(parse("M 30 150 C 30.0001 150 150 30 150.0001 30"), style(2 * h), tol, out);
+    ASSERT_EQ(out.size(), 1u);
+    const Vec2 u = (b - a).normalized(), n = u.perp();
+    const double len = distance(a, b);
+    // Every vertex lies on the rectangle's boundary, within the tolerance.
+    for (const Point q : out[0]) {
+        const double s = (q - a).dot(u), r = std::fabs((q - a).dot(n));
+        const double off = s >= 0 && s <= len && r <= h
+                               ? std::min({s, len - s, h - r})
+                               : std::hypot(std::max({0.0, -s, s - len}), std::max(0.0, r - h));
+        EXPECT_LE(off, tol) << "vertex (" << q.x << ", " << q.y << ") is " << off
+                            << " px off the rectangle (along " << s << ", across " << r << ")";
+    }
+    // Its four corners are vertices: the caps are square to the band.
+    for (const Point corner : {a + n * h, a - n * h, b + n * h, b - n * h}) {
+        double nearest = 1e300;
+        for (const Point q : out[0]) nearest = std::min(nearest, distance(q, corner));
+        EXPECT_LE(nearest, tol) << "corner (" << corner.x << ", " << corner.y << ")";
+    }
+    // And it covers the rectangle: the area is 2 h len, to tol per unit of perimeter.
+    EXPECT_NEAR(std::fabs(area(out[0])), 2 * h * len, tol * 2 * (len + 2 * h));
+}
+
+// Property: strokes (butt caps) of random cubics with one or both handles
+// within 1e-3 px of their end points agree with a dense reference outline
+// built by the rule of stroker.h: a control point within tol/64 of an end
+// point is that end point (tol is at least 0.1 here, so every such handle
+// collapses), and the offsets are sampled 6000 times. The Hausdorff distance
+// between the two outlines is at most tol plus 0.015 px, the reference's own
+// chord error (its chords are at most about 0.3 px long on offsets whose
+// radius of curvature is at least h >= 1 px: 0.3^2 / 8 = 0.011, and far
+// less on most). Curves whose reference folds (radius of curvature below the
+// width) or comes back near itself are skipped.
+TEST(Stroker, NearDegenerateHandlesMatchADenseReference) {
+    testing::Rng rng(2121);
+    int checked = 0;
+    for (int i = 0; i < 200; ++i) {
+        const double tol = rng.log_uniform(0.1, 0.5), w = rng.log_uniform(2, 10), h = w / 2;
+        const int which = rng.integer(0, 2); // 0: start handle short, 1: end, 2: both
+        CubicBez c = testing::random_cubic(rng, 400);
+        const auto short_handle = [&](Point end) {
+            const double len = rng.log_uniform(1e-7, 1e-3), angle = rng.uniform(0, 2 * kPi);
+            return end + Vec2{std::cos(angle), std::sin(angle)} * len;
+        };
+        if (which != 1) c.p[1] = short_handle(c.p[0]);
+        if (which != 0) c.p[2] = short_handle(c.p[3]);
+        CubicBez ref = c; // the rule: the short handles coincide with their ends
+        if (distance(ref.p[1], ref.p[0]) < tol / 64) ref.p[1] = ref.p[0];
+        if (distance(ref.p[2], ref.p[3]) < tol / 64) ref.p[2] = ref.p[3];
+        // Radius of curvature away from the ends: a collapsed handle leaves the
+        // curve like y = x^1.5 there, whose curvature is unbounded but turns
+        // the tangent by little.
+        double min_radius = 1e300;
+        for (int k = 1000; k <= 19000; ++k) {
+            const Vec2 d1 = ref.deriv(k / 20000.0), d2 = ref.deriv2(k / 20000.0);
+            min_radius = std::min(min_radius, std::pow(d1.length(), 3) /
+                                                  std::max(1e-300, std::fabs(d1.cross(d2))));
+        }
+        // Comes back: two points more than 4w apart along the curve (measured
+        // on 400 chords) lie within 2w of each other.
+        std::vector<double> along(401, 0.0);
+        for (int k = 1; k <= 400; ++k)
+            along[std::size_t(k)] = along[std::size_t(k - 1)] +
+                                    distance(ref.eval((k - 1) / 400.0), ref.eval(k / 400.0));
+        bool approaches = false;
+        for (int a = 0; a <= 400 && !approaches; ++a)
+            for (int b = a + 1; b <= 400 && !approaches; ++b)
+                approaches = along[std::size_t(b)] - along[std::size_t(a)] > 4 * w &&
+                             distance(ref.eval(a / 400.0), ref.eval(b / 400.0)) < 2 * w;
+        if (min_radius < w || approaches) continue;
+        // The reference: left offsets forward, right offsets back, closed by the caps.
+        const int n = 6000;
+        Polygon dense(2 * (n + 1));
+        for (int k = 0; k <= n; ++k) {
+            const double t = double(k) / n;
+            Vec2 d = ref.deriv(t);
+            if (d.length_sq() == 0) d = t == 0 ? ref.p[2] - ref.p[0] : ref.p[3] - ref.p[1];
+            const Vec2 nk = d.normalized().perp() * h;
+            dense[std::size_t(k)] = ref.eval(t) + nk;
+            dense[std::size_t(2 * n + 1 - k)] = ref.eval(t) - nk;
+        }
+        Path p;
+        p.move_to(c.start());
+        p.cubic_to(c.p[1], c.p[2], c.p[3]);
+        std::vector<Polygon> out;
+        stroke_outline(p, style(w), tol, out);
+        ASSERT_EQ(out.size(), 1u) << "curve " << i;
+        const Polygon& poly = out[0];
+        const double bound = tol + 0.015;
+        double worst = 0;
+        for (std::size_t k = 0; k < poly.size(); ++k)
+            for (const Point q : {poly[k], midpoint(poly[k], poly[(k + 1) % poly.size()])})
+                worst = std::max(worst, distance_to_polygon(dense, q));
+        for (const Point q : dense) worst = std::max(worst, distance_to_polygon(poly, q));
+        EXPECT_LE(worst, bound) << "curve " << i << " (short handles: "
+                                << (which == 0   ? "start"
+                                    : which == 1 ? "end"
+                                                 : "both")
+                                << ") width " << w << " tol " << tol << ": C " << c.p[0].x << " "
+                                << c.p[0].y << ", " << c.p[1].x << " " << c.p[1].y << ", "
+                                << c.p[2].x << " " << c.p[2].y << ", " << c.p[3].x << " "
+                                << c.p[3].y;
+        ++checked;
+    }
+    EXPECT_GT(checked, 100);
+}
+
+// (b) holds between samples, not only at them: handles 0.01 to 0.05 px long
+// (above tol/64, so kept) both along one direction u at 30 to 90 degrees to
+// the chord. The normal is perpendicular to u at both ends and to the chord
+// in between, and the curve is within 0.05 px of its chord, so the flattener
+// asks for no vertex inside: testing the normal at the ends alone drew a
+// parallelogram, whose sides lie h |sin| of that angle from the curve.
+// Away from the caps the outline is at h +- tol from the curve.
+TEST(Stroker, NormalTurnIsBoundedBetweenSamples) {
+    testing::Rng rng(2122);
+    int checked = 0;
+    for (int i = 0; i < 100; ++i) {
+        const double tol = rng.log_uniform(0.1, 0.5), w = rng.log_uniform(1, 30), h = w / 2;
+        const Point a = rng.point(300), b = rng.point(300);
+        if (distance(a, b) < 4 * w) continue;
+        const double chord = std::atan2((b - a).y, (b - a).x);
+        const double angle = chord + rng.uniform(kPi / 6, kPi / 2) * (rng.integer(0, 1) ? 1 : -1);
+        const Vec2 u{std::cos(angle), std::sin(angle)};
+        const CubicBez c{{a, a + u * rng.uniform(0.01, 0.05), b - u * rng.uniform(0.01, 0.05), b}};
+        Path p;
+        p.move_to(c.start());
+        p.cubic_to(c.p[1], c.p[2], c.p[3]);
+        std::vector<Polygon> out;
+        stroke_outline(p, style(w), tol, out);
+        ASSERT_EQ(out.size(), 1u);
+        const Polygon& poly = out[0];
+        for (std::size_t k = 0; k < poly.size(); ++k) {
+            for (const Point q : {poly[k], midpoint(poly[k], poly[(k + 1) % poly.size()])}) {
+                if (distance(q, c.start()) < w || distance(q, c.end()) < w)
+                    continue; // near the caps
+                EXPECT_NEAR(distance_to_curve(c, q), h, tol + 1e-9)
+                    << "curve " << i << " width " << w << " tol " << tol << " at (" << q.x << ", "
+                    << q.y << ")";
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 100);
 }
 
 TEST(Stroker, CapsExtendAsSpecified) {

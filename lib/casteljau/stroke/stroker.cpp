@@ -5,9 +5,12 @@
 #include "casteljau/geom/line_clip.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <span>
+#include <type_traits>
 
 namespace casteljau {
 
@@ -73,6 +76,93 @@ double base_tolerance(double h, double tol, double dphi) {
     return tol - std::min(tol / 2, 2 * h * s * s);
 }
 
+// Lengths below kUnresolved tolerances (1/256 px at the default 0.25 px)
+// are below what the offsets resolve: a chord that short ends the bisection
+// for (b), which rounds the normal's turn there as a cusp, and a handle that
+// short is collapsed onto its end point (stroker.h: the end-tangent rule),
+// as it only steers the normal over a chord about as short.
+constexpr double kUnresolved = 1.0 / 64;
+
+// Moves onto p[0] the control points after it that lie within eps of it, and
+// onto p[n] those before it likewise: the end points stay, and the curve moves
+// by at most eps (a polynomial or positive-weight rational curve is a convex
+// combination of its control points, and the moved ones' weights sum to at
+// most 1). False, and p unchanged, when no point moves or the curve would
+// collapse to a point.
+bool collapse_polygon_handles(std::span<Point> p, double eps) {
+    const std::size_t n = p.size() - 1;
+    const double eps_sq = eps * eps;
+    std::size_t i = 1, j = n - 1; // p[1, i) move to p[0], p(j, n - 1] to p[n]
+    while (i < n && (p[i] - p[0]).length_sq() < eps_sq) ++i;
+    while (j >= i && j > 0 && (p[j] - p[n]).length_sq() < eps_sq) --j;
+    if (i == 1 && j == n - 1) return false;
+    if (p[0] == p[n] && j < i) return false; // every point within eps of p[0]
+    for (std::size_t k = 1; k < i; ++k) p[k] = p[0];
+    for (std::size_t k = j + 1; k < n; ++k) p[k] = p[n];
+    return true;
+}
+
+// The segment with its short handles collapsed (collapse_polygon_handles); false
+// when none is. Conics of weight <= 0 are not convex combinations of their
+// control points and are left as they are.
+bool collapse_short_handles(const Segment& s, double eps, Segment& out) {
+    return std::visit(
+        [&](const auto& c) {
+            using Curve = std::decay_t<decltype(c)>;
+            if constexpr (std::is_same_v<Curve, Line>) {
+                return false;
+            } else if constexpr (std::is_same_v<Curve, Conic>) {
+                std::array<Point, 3> p = c.control_points();
+                if (!(c.w > 0) || !collapse_polygon_handles(p, eps)) return false;
+                out = Conic{p[0], p[1], p[2], c.w};
+                return true;
+            } else {
+                Curve r = c;
+                if (!collapse_polygon_handles(r.p, eps)) return false;
+                out = r;
+                return true;
+            }
+        },
+        s);
+}
+
+// (b) inside a piece of c over [t0, t1] whose end tangents d0 and d1 (unit)
+// are within dphi (given as its cosine): whether every tangent between is.
+// The derivative of the piece is a Bezier whose control vectors are, up to
+// the factor t1 - t0, the blossoms of c's hodograph H at (t0, ..., t1), so
+// every tangent of the piece lies in their cone, and the first and last of
+// them point along d0 and d1. For lines, quadratics and positive-weight
+// conics (whose pieces' control polygons have two legs, along the end
+// tangents) that is all. A cubic's piece has a middle one, H(t0, t1), which
+// must lie within dphi of both ends: directions pairwise within an angle
+// below pi/2 (dphi <= pi/8) lie in an arc of that angle. The ends alone do
+// not do: on M30 150 C 30.0001 150 150 30 150.0001 30 (issue 21) both end
+// tangents are +x and the one in between diagonal, and the two end samples
+// drew a parallelogram 0.7x as wide as the stroke.
+template <class Curve>
+struct Interior {
+    explicit Interior(const Curve&) {}
+    bool turns_within(double, double, Vec2, Vec2, double) const { return true; }
+};
+
+template <>
+struct Interior<CubicBez> {
+    // H(t0, t1) = a + b (t0 + t1) + c t0 t1, from the hodograph H0, H1, H2.
+    Vec2 a, b, c;
+    explicit Interior(const CubicBez& cubic) {
+        const auto h = cubic.hodograph();
+        a = h[0], b = h[1] - h[0], c = h[0] - h[1] * 2.0 + h[2];
+    }
+    bool turns_within(double t0, double t1, Vec2 d0, Vec2 d1, double cos_dphi) const {
+        const Vec2 m = a + b * (t0 + t1) + c * (t0 * t1);
+        // m is within dphi (< pi/2) of the unit d when m.d >= cos(dphi) |m|:
+        // squared, no root. Asked as "is it outside", so that a NaN from
+        // overflowing geometry counts as within, as it did at the ends.
+        const double a0 = m.dot(d0), a1 = m.dot(d1), c2 = cos_dphi * cos_dphi * m.length_sq();
+        return !(a0 < 0 || a0 * a0 < c2 || a1 < 0 || a1 * a1 < c2);
+    }
+};
+
 class Sampler {
   public:
     // dphi = max_normal_turn(h, tol).
@@ -80,25 +170,33 @@ class Sampler {
         : tol_(tol), base_tol_(base_tolerance(h, tol, dphi)), cos_dphi_(std::cos(dphi)),
           vertices_(vertices) {}
 
-    // Samples of one segment, t = 0 first.
+    // Samples of one segment, t = 0 first, and of its end tangents (the first
+    // and last samples'), with handles shorter than kUnresolved tolerances
+    // collapsed: (a) is then held to that much less, so that the samples stay
+    // within tol of the offsets of a curve within tol / 64 of the given one.
     void run(const Segment& s, std::vector<Sample>& out) {
-        std::visit([&](const auto& c) { run(s, c, out); }, s);
+        Segment collapsed;
+        const double eps = kUnresolved * tol_;
+        const bool moved = collapse_short_handles(s, eps, collapsed);
+        const Segment& seg = moved ? collapsed : s;
+        std::visit([&](const auto& c) { run(seg, c, base_tol_ - (moved ? eps : 0.0), out); }, seg);
     }
 
   private:
     template <class Curve>
-    void run(const Segment& s, const Curve& c, std::vector<Sample>& out) {
+    void run(const Segment& s, const Curve& c, double base_tol, std::vector<Sample>& out) {
         Vec2 d = tangent(s, c, 0.0);
         out.push_back({c.start(), d});
         // (a): the guided flattener's vertices at the base tolerance (cheaper
         // per sample than adaptive's exact chords; measured faster on thin
         // strokes in bench/render/cairo_compare_bench, where (a) dominates).
         vertices_.clear();
-        flatten_curve(c, FlattenOptions{base_tol_, FlattenMethod::Guided, 0},
+        flatten_curve(c, FlattenOptions{base_tol, FlattenMethod::Guided, 0},
                       [&](const FlatVertex& v) { vertices_.push_back(v); });
         FlatVertex a{c.start(), 0.0};
+        const Interior<Curve> interior(c);
         for (const FlatVertex& b : vertices_) {
-            refine(s, c, a, b, d, out);
+            refine(s, c, interior, a, b, d, out);
             a = b;
         }
     }
@@ -108,8 +206,8 @@ class Sampler {
     // on at once and only right halves wait on the stack (one per depth), so
     // the usual span, which needs no cut, touches no stack.
     template <class Curve>
-    void refine(const Segment& s, const Curve& c, FlatVertex a, FlatVertex b, Vec2& d,
-                std::vector<Sample>& out) {
+    void refine(const Segment& s, const Curve& c, const Interior<Curve>& interior, FlatVertex a,
+                FlatVertex b, Vec2& d, std::vector<Sample>& out) {
         struct Span {
             FlatVertex a, b;
             int depth;
@@ -120,8 +218,10 @@ class Sampler {
             const Vec2 db = tangent(s, c, sp.b.t);
             // The unit tangents turn by more than dphi in [0, pi] exactly when
             // their dot product is below cos(dphi): no angle needs computing.
-            const bool turns = d.dot(db) < cos_dphi_;
-            if (turns && sp.depth < 16 && distance(sp.a.p, sp.b.p) > tol_ / 64) {
+            // Between them, the control polygon of the piece decides.
+            const bool turns =
+                d.dot(db) < cos_dphi_ || !interior.turns_within(sp.a.t, sp.b.t, d, db, cos_dphi_);
+            if (turns && sp.depth < 16 && distance(sp.a.p, sp.b.p) > kUnresolved * tol_) {
                 const double m = 0.5 * (sp.a.t + sp.b.t);
                 const FlatVertex mid{c.eval(m), m};
                 right_halves.push({mid, sp.b, sp.depth + 1});

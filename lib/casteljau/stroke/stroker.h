@@ -5,7 +5,12 @@
 // h = width / 2, n the unit normal, sampled at parameters chosen so that, per
 // chord of the samples,
 //   (b) the normal turns by at most dphi = 2 acos(1 - tol / (2h)), at most
-//       pi/8 (at least 4 samples per quarter turn), and
+//       pi/8 (at least 4 samples per quarter turn), over the whole piece
+//       between the samples, not only from one end to the other: every
+//       tangent of the piece lies in the cone of its control polygon's legs,
+//       and the legs must lie within dphi of each other (a normal that swings
+//       away and back between two samples with the same normal, as on the
+//       curve below, drew a band 0.7x as wide as the stroke), and
 //   (a) the base curve is within tol - h (1 - cos(dphi/2)) of its chord (the
 //       guided flattener's test, flatten/guided.h): tol/2, or more for thin
 //       strokes, whose dphi is capped,
@@ -16,6 +21,31 @@
 // the curve is never flattened first and offset after. Where the normal turns
 // fast over a vanishing length (a cusp), subdivision stops at a chord of
 // tol/64 and the offset sides are joined by a round arc there.
+//
+// End tangents. A handle (a control point next to an end point) shorter
+// than tol/64 is collapsed onto its end point before the segment is
+// sampled, so the tangent there, which caps and joins take, points to the
+// next control point farther than tol/64 from that end (to the other end if
+// none is). tol is in device pixels (the renderer passes its tolerance in
+// user units), so the threshold is 1/256 px at the default 0.25 px. On
+// M30 150 C 30.0001 150 150 30 150.0001 30 the exact tangent at each end is
+// +x and turns to the chord's 45 degrees within t ~ 1e-6, and the exact
+// offset ends in a cap square to +x and a 45-degree wedge of radius h: a
+// change of size h in the drawing from handles 1e-4 px long, which Cairo,
+// Skia and resvg do not draw (they draw a straight band with square caps).
+// Why tol/64: it is the chord below which (b) already leaves the normal's
+// turns unresolved (rounded as a cusp), and a handle that short steers the
+// normal over about as short a stretch of curve; at the default tolerance it
+// is the grid of Cairo's 24.8 fixed point, where a handle under about 1/512
+// px is zero and the next distinct control point gives the tangent. (Skia
+// and tiny-skia, which resvg uses, take the next point only for a handle of
+// exactly zero, but stroke a cubic whose inner control points lie within
+// 0.3% of its size of the line through its outer ones as a line: a rule in
+// the curve's size, not in pixels.) The collapsed curve is within tol/64 of
+// the given one (the moved points' Bernstein weights sum to at most 1), and
+// (a) is held to tol/64 less on it, so its outline is within tol of the
+// given curve's stroke but for the unresolved turns at its ends. Below
+// 0.0064 px of tolerance the example's handles are kept, and its wedges drawn.
 //
 // Joins (between segments): on the outer side miter (falling back to bevel
 // when the miter ratio 1 / sin(theta/2) exceeds the limit), round (an arc of
