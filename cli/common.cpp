@@ -43,6 +43,10 @@ void add_svg_options(CLI::App* cmd, SvgOptions& o) {
                   "Make the first problem in an SVG file an error (exit 2, no image), instead of "
                   "a warning and the recovery the SVG and CSS specs prescribe (an invalid value "
                   "ignored, path data drawn up to its error)");
+    cmd->add_option("--languages", o.languages,
+                    "The user's languages for systemLanguage and <switch>, comma-separated "
+                    "(default en)")
+        ->delimiter(',');
     // Path data is drawn up to its first error by default now: the flag of
     // that name stays, accepted and doing nothing, for the scripts that pass it.
     cmd->add_flag("--partial-path-data")->group("");

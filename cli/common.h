@@ -31,7 +31,8 @@ void add_flatten_options(CLI::App* cmd, FlattenOptions& o);
 // returns false (the caller exits with status 2).
 bool check_tolerance(const char* command, double tolerance);
 
-// --strict (and the old --partial-path-data, now what is done anyway), into `o`.
+// --strict, --languages (and the old --partial-path-data, now what is done
+// anyway), into `o`.
 void add_svg_options(CLI::App* cmd, SvgOptions& o);
 
 // Reads an SVG file and prints its warnings. On failure prints the located

@@ -97,6 +97,7 @@ BAD = {
     "external_entity.svg": r"2: <!DOCTYPE>: entity declarations are not supported",
     "not_svg.svg": r"1: the root element is <html>, not <svg>",
     "nested_groups_10k.svg": r"258: <g>: elements nested deeper than 256",
+    "use_bomb.svg": r"1: <svg>: more than 1000000 elements once <use> is expanded",
     "path_attribute_50MB.svg": r"2: <path>: attribute d is 52428800 bytes, over the limit",
     "bpt_wrong_count.bpt": r"7: unexpected end of file",
     "bpt_nan.bpt": r"5: y: 'nan' is not a finite number",
@@ -119,6 +120,7 @@ RECOVERED = {
     "overflowing_number.svg": r"2: <rect>: attribute width: '1e309' is not a length; ignored",
     "path_1e308_overflow.svg": r"2: <path>: attribute d: .*overflow the double range",
     "gradient_href_cycle.svg": r"2: <linearGradient>: href '#b' makes a cycle; the chain ends here",
+    "use_cycle.svg": r"2: <use>: href '#a' contains the use itself; skipped",
 }
 
 def generate_bad(folder):

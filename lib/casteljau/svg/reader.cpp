@@ -2,6 +2,7 @@
 
 #include "casteljau/curve/path_data.h"
 #include "casteljau/io/text_file.h"
+#include "casteljau/svg/conditional.h"
 #include "casteljau/svg/detail/gradients.h"
 #include "casteljau/svg/shapes.h"
 #include "casteljau/svg/style.h"
@@ -12,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <pugixml.hpp>
 #include <set>
 
@@ -34,13 +36,13 @@ bool silently_skipped(std::string_view n) {
 }
 
 // SVG elements that change what a file shows and that this reader does not
-// draw yet: skipped with a warning. Any other element is unknown to SVG, and
-// an unknown element is not rendered (SVG 2, 5.x "unknown elements"): no
-// warning.
+// draw yet: skipped with a warning. Any other element (but symbol, drawn only
+// through use) is unknown to SVG, and an unknown element is not rendered
+// (SVG 2, 5.9 "unknown elements"): no warning.
 bool unsupported(std::string_view n) {
-    static const std::set<std::string_view> names = {
-        "use",  "symbol", "svg",     "switch", "image", "text",         "clipPath",
-        "mask", "marker", "pattern", "filter", "style", "foreignObject"};
+    static const std::set<std::string_view> names = {"image",  "text",   "clipPath",
+                                                     "mask",   "marker", "pattern",
+                                                     "filter", "style",  "foreignObject"};
     return names.count(n) != 0;
 }
 
@@ -121,7 +123,7 @@ class Reader {
         for (const pugi::xml_node& n : doc.children())
             if (n.type() == pugi::node_doctype && std::strstr(n.value(), "<!ENTITY"))
                 fail_at(n.offset_debug(), "<!DOCTYPE>: entity declarations are not supported");
-        const pugi::xml_node root = doc.document_element();
+        const pugi::xml_node root = root_ = doc.document_element();
         if (std::strcmp(root.name(), "svg") != 0)
             fail_at(root.offset_debug(),
                     std::string("the root element is <") + root.name() + ">, not <svg>");
@@ -135,6 +137,9 @@ class Reader {
         ElementProps props;
         apply_declarations(root, style, style, &props, context(style));
         if (!view) return scene; // a zero-sized viewBox: nothing is drawn
+        if (const std::size_t n = expanded_size(root, 0); n > options_.max_elements)
+            fail(root, "more than " + std::to_string(options_.max_elements) +
+                           " elements once <use> is expanded (the limit)");
         walk(root, style, *view, scene.root, 1);
         if (props.opacity < 1)
             scene.root = Group{1, {Node{Group{props.opacity, std::move(scene.root.children)}}}};
@@ -229,48 +234,229 @@ class Reader {
 
     void walk(const pugi::xml_node& parent, const StyleState& parent_style, const Affine& ctm,
               Group& out, int depth) {
-        for (const pugi::xml_node& n : parent.children()) {
-            if (n.type() != pugi::node_element) continue;
-            if (++elements_ > options_.max_elements)
-                fail(n, "more than " + std::to_string(options_.max_elements) +
-                            " elements (the limit)");
-            if (depth > options_.max_depth)
-                fail(n, "elements nested deeper than " + std::to_string(options_.max_depth) +
-                            " (the limit)");
-            const std::string_view name = n.name();
-            if (name.find(':') != name.npos || silently_skipped(name))
-                continue; // foreign namespaces
-            const bool group = name == "g" || name == "a";
-            if (!group && !is_shape(name)) {
-                if (unsupported(name)) warn(n, "not supported yet; skipped");
-                continue;
-            }
-            StyleState style = parent_style;
-            ElementProps props;
-            apply_declarations(n, parent_style, style, nullptr, context(parent_style));
-            apply_declarations(n, parent_style, style, &props, context(style));
-            if (props.display_none) continue;
-            Affine m = ctm;
-            if (const pugi::xml_attribute t = n.attribute("transform")) {
-                const TransformResult tr = parse_transform_list(t.value());
-                if (tr.error.empty())
-                    m = ctm * tr.transform;
-                else
-                    problem(n, "transform: " + tr.error + "; ignored");
-            }
-            if (group) {
-                Group g{props.opacity, {}};
-                walk(n, style, m, g, depth + 1);
-                if (g.opacity >= 1.0f)
-                    std::move(g.children.begin(), g.children.end(),
-                              std::back_inserter(out.children));
-                else
-                    out.children.push_back(Node{std::move(g)});
-                continue;
-            }
-            if (std::optional<Shape> s = shape(n, name, style, m, props))
-                out.children.push_back(Node{std::move(*s)});
+        for (const pugi::xml_node& n : parent.children())
+            if (n.type() == pugi::node_element) element(n, parent_style, ctm, out, depth);
+    }
+
+    // Whether the element's conditional attributes let it be rendered.
+    bool conditions_hold(const pugi::xml_node& n) const {
+        Conditions c;
+        if (const pugi::xml_attribute a = n.attribute("systemLanguage"))
+            c.system_language = a.value();
+        if (const pugi::xml_attribute a = n.attribute("requiredExtensions"))
+            c.required_extensions = a.value();
+        return casteljau::conditions_hold(c, options_.languages);
+    }
+
+    // Adds a group's children to `out`, or the group itself when it needs a
+    // layer (opacity below 1).
+    static void add_group(Group& out, Group g) {
+        if (g.opacity >= 1.0f)
+            std::move(g.children.begin(), g.children.end(), std::back_inserter(out.children));
+        else if (!g.children.empty())
+            out.children.push_back(Node{std::move(g)});
+    }
+
+    // One element and what it holds, drawn into `out`. Every element visited
+    // counts against the element limit, instances of <use> included, so a
+    // nest of uses that would expand past it stops there (billion laughs).
+    void element(const pugi::xml_node& n, const StyleState& parent_style, const Affine& ctm,
+                 Group& out, int depth) {
+        if (++elements_ > options_.max_elements)
+            fail(n, "more than " + std::to_string(options_.max_elements) +
+                        " elements, <use> instances included (the limit)");
+        if (depth > options_.max_depth)
+            fail(n, "elements nested deeper than " + std::to_string(options_.max_depth) +
+                        ", <use> instances included (the limit)");
+        const std::string_view name = n.name();
+        if (name.find(':') != name.npos || silently_skipped(name)) return; // foreign namespaces
+        const bool group = name == "g" || name == "a";
+        const bool structure = group || name == "switch" || name == "svg" || name == "use";
+        if (!structure && !is_shape(name)) {
+            if (unsupported(name)) warn(n, "not supported yet; skipped");
+            return; // symbol too: drawn only through <use>
         }
+        if (!conditions_hold(n)) return;
+        StyleState style = parent_style;
+        ElementProps props;
+        apply_declarations(n, parent_style, style, nullptr, context(parent_style));
+        apply_declarations(n, parent_style, style, &props, context(style));
+        if (props.display_none) return;
+        Affine m = ctm;
+        if (const pugi::xml_attribute t = n.attribute("transform")) {
+            const TransformResult tr = parse_transform_list(t.value());
+            const Vec2 o = props.transform_origin;
+            if (tr.error.empty())
+                m = ctm * Affine::translate(o) * tr.transform * Affine::translate(-o);
+            else
+                problem(n, "transform: " + tr.error + "; ignored");
+        }
+        Group g{props.opacity, {}};
+        if (group) {
+            walk(n, style, m, g, depth + 1);
+        } else if (name == "switch") {
+            for (const pugi::xml_node& c : n.children())
+                if (c.type() == pugi::node_element && conditions_hold(c)) {
+                    element(c, style, m, g, depth + 1);
+                    break;
+                }
+        } else if (name == "svg") {
+            nested_viewport(n, n, style, m, g, depth);
+        } else if (name == "use") {
+            use(n, style, m, g, depth);
+        } else if (std::optional<Shape> sh = shape(n, name, style, m, props)) {
+            out.children.push_back(Node{std::move(*sh)});
+            return;
+        }
+        add_group(out, std::move(g));
+    }
+
+    // <use> (SVG 1.1, 5.6; SVG 2, 5.6): the referenced element drawn as if it
+    // were the use's child, inheriting the use's style, moved by x, y; a
+    // <symbol> or <svg> becomes a viewport of the use's width and height. A
+    // reference to itself or to an element being instanced (a cycle) is a
+    // problem, and nothing is drawn.
+    void use(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out,
+             int depth) {
+        const char* href =
+            n.attribute("href") ? n.attribute("href").value() : n.attribute("xlink:href").value();
+        const pugi::xml_node target = href[0] == '#' ? by_id(href + 1) : pugi::xml_node();
+        if (!target) {
+            if (href[0]) problem(n, std::string("href '") + href + "' names no element; skipped");
+            return;
+        }
+        for (pugi::xml_node a = n; a; a = a.parent())
+            if (a == target)
+                return problem(n,
+                               std::string("href '") + href + "' contains the use itself; skipped");
+        if (std::find(instancing_.begin(), instancing_.end(), target) != instancing_.end())
+            return problem(n, std::string("href '") + href + "' makes a cycle; skipped");
+        const LengthContext ctx = context(style);
+        const auto at = [&](const char* attr, double percent_of) {
+            return length(n, attr, percent_of, ctx).value_or(0);
+        };
+        const Affine moved = m * Affine::translate({at("x", vw_), at("y", vh_)});
+        instancing_.push_back(target);
+        const std::string_view kind = target.name();
+        if (kind == "symbol" || kind == "svg") {
+            if (conditions_hold(target)) {
+                StyleState inner = style;
+                ElementProps props;
+                apply_declarations(target, style, inner, nullptr, ctx);
+                apply_declarations(target, style, inner, &props, context(inner));
+                if (!props.display_none) {
+                    Group g{props.opacity, {}};
+                    nested_viewport(target, n, inner, moved, g, depth + 1);
+                    add_group(out, std::move(g));
+                }
+            }
+        } else {
+            element(target, style, moved, out, depth + 1);
+        }
+        instancing_.pop_back();
+    }
+
+    // A new viewport (SVG 1.1, 7.9): a nested <svg>, or a <symbol> or <svg>
+    // instanced by a <use>. Its x, y, width and height come from `sizes` (the
+    // element itself, or the use: x and y are the use's translation then, and
+    // its width and height win over the element's), percentages of the
+    // enclosing viewport; width and height are 100% when absent; a negative
+    // one is an error and a zero one disables rendering. Its viewBox,
+    // preserveAspectRatio and, for a symbol, refX and refY (SVG 2) map its
+    // content. Percentages inside refer to it. Not clipped to it yet: the
+    // overflow property needs clip paths.
+    void nested_viewport(const pugi::xml_node& n, const pugi::xml_node& sizes,
+                         const StyleState& style, const Affine& m, Group& out, int depth) {
+        const LengthContext ctx = context(style);
+        const auto side = [&](const char* attr, double full) -> std::optional<double> {
+            std::optional<double> v = length(sizes, attr, full, ctx);
+            if (!v && sizes != n) v = length(n, attr, full, ctx);
+            return non_negative(sizes, attr, v ? v : full);
+        };
+        const auto w = side("width", vw_), h = side("height", vh_);
+        if (!w || !h || *w == 0 || *h == 0) return;
+        Affine inner = m;
+        if (sizes == n) {
+            inner = inner * Affine::translate({length(n, "x", vw_, ctx).value_or(0),
+                                               length(n, "y", vh_, ctx).value_or(0)});
+        }
+        std::optional<ViewBox> box;
+        if (const pugi::xml_attribute a = n.attribute("viewBox")) {
+            ViewBoxResult vb = parse_view_box(a.value());
+            if (!vb.error.empty()) problem(n, vb.error);
+            box = vb.box;
+            if (box && (box->w == 0 || box->h == 0)) return;
+        }
+        // refX, refY (SVG 2, 5.5): the symbol's point placed at the use's x, y.
+        // Absent, the viewport's corner is (the point is not 0 0: that would
+        // undo the alignment, which librsvg and browsers keep).
+        std::optional<Point> ref;
+        if (std::string_view(n.name()) == "symbol" && (n.attribute("refX") || n.attribute("refY")))
+            ref = Point{length(n, "refX", vw_, ctx).value_or(0),
+                        length(n, "refY", vh_, ctx).value_or(0)};
+        Affine view = Affine::identity();
+        if (box) {
+            AspectRatio ar;
+            if (const pugi::xml_attribute a = n.attribute("preserveAspectRatio")) {
+                if (const auto parsed = parse_aspect_ratio(a.value()))
+                    ar = *parsed;
+                else
+                    problem(n, std::string("preserveAspectRatio: '") + a.value() +
+                                   "' is invalid; xMidYMid meet is used");
+            }
+            view = view_box_transform(*box, ar, 0, 0, *w, *h);
+        }
+        if (ref) view = Affine::translate(Point{0, 0} - view * *ref) * view;
+        inner = inner * view;
+        const double saved_w = vw_, saved_h = vh_;
+        vw_ = box ? box->w : *w;
+        vh_ = box ? box->h : *h;
+        walk(n, style, inner, out, depth + 1);
+        vw_ = saved_w, vh_ = saved_h;
+    }
+
+    // How many elements the walk would visit under `n`, <use> instances
+    // counted as their targets' trees, saturating just past the limit: a nest
+    // of uses that would expand to 10^9 elements (billion laughs) is refused
+    // before any of it is built, in time linear in the document (each
+    // target's count is kept). Recursion is as deep as the nesting depth
+    // limit: deeper, the walk will stop with that limit's error.
+    std::size_t expanded_size(const pugi::xml_node& n, int depth) {
+        const std::size_t over = options_.max_elements + 1;
+        if (depth > options_.max_depth) return 1;
+        if (const auto it = sizes_.find(n.internal_object()); it != sizes_.end()) return it->second;
+        sizes_[n.internal_object()] = 1; // a cycle back to n: the walk skips it
+        std::size_t total = 1;
+        if (std::string_view(n.name()) == "use") {
+            const char* href = n.attribute("href") ? n.attribute("href").value()
+                                                   : n.attribute("xlink:href").value();
+            if (const pugi::xml_node t = href[0] == '#' ? by_id(href + 1) : pugi::xml_node())
+                total += expanded_size(t, depth + 1);
+        } else if (!silently_skipped(n.name())) {
+            for (const pugi::xml_node& c : n.children())
+                if (c.type() == pugi::node_element)
+                    total = std::min(over, total + expanded_size(c, depth + 1));
+        }
+        return sizes_[n.internal_object()] = std::min(over, total);
+    }
+
+    pugi::xml_node by_id(const std::string& id) {
+        if (ids_.empty()) {
+            struct Walker : pugi::xml_tree_walker {
+                std::map<std::string, pugi::xml_node>* map;
+                bool for_each(pugi::xml_node& e) override {
+                    if (e.type() == pugi::node_element)
+                        if (const pugi::xml_attribute a = e.attribute("id"))
+                            map->emplace(a.value(), e); // the first of an id wins
+                    return true;
+                }
+            } walker;
+            walker.map = &ids_;
+            root_.traverse(walker);
+            ids_.emplace("", pugi::xml_node()); // indexed: not empty any more
+        }
+        const auto it = ids_.find(id);
+        return it == ids_.end() ? pugi::xml_node() : it->second;
     }
 
     std::optional<Shape> shape(const pugi::xml_node& n, std::string_view name,
@@ -380,6 +566,10 @@ class Reader {
     double root_font_size_ = 16;
     double vw_ = 0, vh_ = 0; // viewport size in user units, for percentages
     std::optional<svg_detail::GradientIndex> gradients_;
+    pugi::xml_node root_;
+    std::map<std::string, pugi::xml_node> ids_; // built at the first <use>
+    std::vector<pugi::xml_node> instancing_;    // the <use> targets being drawn
+    std::map<const void*, std::size_t> sizes_;  // expanded_size's, per element
 };
 
 } // namespace

@@ -40,6 +40,8 @@ struct SvgOptions {
     /// 678.9" is 14 bytes, an absolute cubic about 40).
     std::size_t max_attribute_bytes = std::size_t(32) << 20;
     double max_size = 16384; ///< document width and height, px
+    /// The user's languages, for systemLanguage (conditional.h).
+    std::vector<std::string> languages{"en"};
     /// The first problem in the input is an error (no image), instead of a
     /// warning and the spec's recovery.
     bool strict = false;

@@ -177,6 +177,49 @@ std::optional<double> parse_font_size(std::string_view v, double parent, const L
     return at_least(parse_length(v, parent, of_parent), 0);
 }
 
+// transform-origin: one to three values, each a length, a percentage or a
+// keyword (left, center, right for x; top, center, bottom for y; a single y
+// keyword leaves x at center), the third (z) ignored in 2D.
+std::optional<Vec2> parse_transform_origin(std::string_view v, const LengthContext& ctx) {
+    std::vector<std::string_view> words;
+    for (std::size_t i = 0; i < v.size();) {
+        while (i < v.size() && std::isspace(static_cast<unsigned char>(v[i]))) ++i;
+        const std::size_t start = i;
+        while (i < v.size() && !std::isspace(static_cast<unsigned char>(v[i]))) ++i;
+        if (i > start) words.push_back(v.substr(start, i - start));
+    }
+    if (words.empty() || words.size() > 3) return std::nullopt;
+    const auto keyword = [](std::string_view w) -> std::optional<std::pair<char, double>> {
+        if (w == "left") return std::pair{'x', 0.0};
+        if (w == "right") return std::pair{'x', 1.0};
+        if (w == "top") return std::pair{'y', 0.0};
+        if (w == "bottom") return std::pair{'y', 1.0};
+        if (w == "center") return std::pair{'c', 0.5};
+        return std::nullopt;
+    };
+    double f[2] = {0.5, 0.5};
+    bool set[2] = {false, false};
+    for (std::size_t i = 0; i < std::min<std::size_t>(words.size(), 2); ++i) {
+        if (const auto k = keyword(words[i])) {
+            // A y keyword first ("top left") puts the other value on x.
+            const int axis = k->first == 'y' || (k->first == 'c' && set[0]) ? 1 : 0;
+            if (set[axis]) return std::nullopt;
+            f[axis] = k->second * (axis ? ctx.viewport_h : ctx.viewport_w);
+            set[axis] = true;
+            continue;
+        }
+        const int axis = set[0] ? 1 : int(i);
+        const auto len = parse_length(words[i], axis ? ctx.viewport_h : ctx.viewport_w, ctx);
+        if (!len || set[axis]) return std::nullopt;
+        f[axis] = *len;
+        set[axis] = true;
+    }
+    for (int a = 0; a < 2; ++a)
+        if (!set[a]) f[a] = 0.5 * (a ? ctx.viewport_h : ctx.viewport_w);
+    if (words.size() == 3 && !parse_length(words[2], 0, ctx)) return std::nullopt;
+    return Vec2{f[0], f[1]};
+}
+
 } // namespace
 
 std::optional<Rgba> resolve_paint(const PaintSpec& p, const StyleState& s) {
@@ -247,6 +290,9 @@ std::string apply_property(std::string_view name, std::string_view value, const 
                                            {"round", LineCap::Round},
                                            {"square", LineCap::Square}}),
                    "butt, round or square");
+    if (name == "transform-origin")
+        return set(props.transform_origin, Vec2{}, parse_transform_origin(value, ctx),
+                   "a transform origin");
     if (name == "display") {
         props.display_none = value == "none";
         return "";

@@ -68,6 +68,10 @@ struct StyleState {
 struct ElementProps {
     float opacity = 1;
     bool display_none = false;
+    /// transform-origin (CSS Transforms 1, 6): the point the transform is
+    /// applied about, in user units; percentages and keywords of the
+    /// viewport (SVG's default transform-box, view-box). Initially 0 0.
+    Vec2 transform_origin;
 };
 
 /// Applies one property. Returns "" when applied or unknown, otherwise what is

@@ -1,0 +1,169 @@
+// Structure as SVG resolves it at read time: use (and symbol and svg through
+// it), nested viewports, switch and conditional attributes, transform-origin,
+// and the element limit counted after <use> is expanded.
+#include "casteljau/svg/conditional.h"
+#include "casteljau/svg/reader.h"
+
+#include <gtest/gtest.h>
+#include <string>
+#include <vector>
+
+namespace casteljau {
+namespace {
+
+SvgResult read(const std::string& body, const SvgOptions& o = {}) {
+    return parse_svg(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="200" height="200">)svg" +
+                         body + "</svg>",
+                     "s.svg", o);
+}
+
+// Every shape of the scene in drawing order, with its device bounds.
+void collect(const Group& g, std::vector<const Shape*>& out) {
+    for (const Node& n : g.children) {
+        if (const Shape* s = std::get_if<Shape>(&n.item))
+            out.push_back(s);
+        else
+            collect(std::get<Group>(n.item), out);
+    }
+}
+std::vector<const Shape*> shapes(const Scene& s) {
+    std::vector<const Shape*> out;
+    collect(s.root, out);
+    return out;
+}
+Rect device_bounds(const Shape& s) {
+    const Rect b = s.path.bounds();
+    return Rect::from_points(s.transform * b.min(), s.transform * b.max());
+}
+void expect_box(const Shape& s, Rect want, const char* what) {
+    const Rect b = device_bounds(s);
+    EXPECT_NEAR(b.x0, want.x0, 1e-9) << what;
+    EXPECT_NEAR(b.y0, want.y0, 1e-9) << what;
+    EXPECT_NEAR(b.x1, want.x1, 1e-9) << what;
+    EXPECT_NEAR(b.y1, want.y1, 1e-9) << what;
+}
+
+TEST(Use, DrawsItsTargetMovedAndInheritingItsStyle) {
+    const SvgResult r = read(R"svg(<defs><rect id="r" width="10" height="5"/></defs>
+        <use href="#r" x="20" y="30" fill="blue"/>
+        <use xlink:href="#r" transform="scale(2)" x="5" fill="lime" opacity="0.5"/>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    EXPECT_TRUE(r.warnings.empty());
+    const auto s = shapes(*r.scene);
+    ASSERT_EQ(s.size(), 2u);
+    expect_box(*s[0], {20, 30, 30, 35}, "moved by x, y");
+    EXPECT_EQ(s[0]->fill->color, (Rgba{0, 0, 1, 1}));
+    expect_box(*s[1], {10, 0, 30, 10}, "the use's transform, then x");
+    EXPECT_EQ(s[1]->fill->color, (Rgba{0, 1, 0, 1}));
+    // The use's opacity makes a group (a layer).
+    ASSERT_TRUE(std::holds_alternative<Group>(r.scene->root.children.at(1).item));
+    EXPECT_EQ(std::get<Group>(r.scene->root.children[1].item).opacity, 0.5f);
+}
+
+TEST(Use, SymbolsAndSvgsBecomeViewportsOfTheUsesSize) {
+    // A 10 x 10 view box into 40 x 20, centred (xMidYMid meet): scale 2,
+    // moved right by 10; with refX/refY the symbol's point lands on x, y.
+    const SvgResult r = read(R"svg(
+        <symbol id="s" viewBox="0 0 10 10"><rect width="10" height="10"/></symbol>
+        <symbol id="t" viewBox="0 0 10 10" refX="5" refY="5"><rect width="10" height="10"/></symbol>
+        <svg id="v" viewBox="0 0 10 10" width="5" height="5"><rect width="10" height="10"/></svg>
+        <use href="#s" x="100" y="10" width="40" height="20"/>
+        <use href="#t" x="100" y="100" width="40" height="20"/>
+        <use href="#v" x="50" y="50" width="30" height="30"/>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    const auto s = shapes(*r.scene);
+    ASSERT_EQ(s.size(), 4u); // the nested svg itself, then the three instances
+    expect_box(*s[0], {0, 0, 5, 5}, "nested svg, its own size");
+    expect_box(*s[1], {110, 10, 130, 30}, "symbol, meet, centred");
+    expect_box(*s[2], {90, 90, 110, 110}, "symbol, refX/refY on x, y");
+    expect_box(*s[3], {50, 50, 80, 80}, "svg, the use's size wins");
+}
+
+TEST(NestedSvg, ViewportPercentagesAndDisabling) {
+    const SvgResult r = read(R"svg(
+        <svg x="10" y="20" width="50" height="40"><rect width="50%" height="50%"/></svg>
+        <svg width="0" height="10"><rect width="5" height="5"/></svg>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    const auto s = shapes(*r.scene);
+    ASSERT_EQ(s.size(), 1u);
+    expect_box(*s[0], {10, 20, 35, 40}, "percentages of the nested viewport");
+}
+
+TEST(Use, CyclesAndMissingTargetsAreSkippedWithAWarning) {
+    const SvgResult r = read(R"svg(<g id="a"><rect width="1" height="1"/><use href="#a"/></g>
+        <g id="b"><use href="#c"/></g><g id="c"><use href="#b"/></g><use href="#nothing"/>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    EXPECT_EQ(shapes(*r.scene).size(), 1u);
+    ASSERT_EQ(r.warnings.size(), 4u); // a; b -> c -> b and c -> b -> c; nothing
+    EXPECT_NE(r.warnings[0].text().find("s.svg:1: <use>: href '#a' contains the use itself"),
+              std::string::npos)
+        << r.warnings[0].text();
+    EXPECT_NE(r.warnings[1].text().find("makes a cycle"), std::string::npos);
+    EXPECT_NE(r.warnings[3].text().find("'#nothing' names no element"), std::string::npos);
+}
+
+TEST(Use, TheElementLimitCountsInstancesBeforeAnyIsBuilt) {
+    // Ten levels of ten uses: 10^10 rectangles. Refused by the count alone.
+    std::string defs = R"svg(<defs><rect id="a0" width="1" height="1"/>)svg";
+    for (int i = 1; i < 10; ++i) {
+        defs += "<g id='a" + std::to_string(i) + "'>";
+        for (int k = 0; k < 10; ++k) defs += "<use href='#a" + std::to_string(i - 1) + "'/>";
+        defs += "</g>";
+    }
+    const SvgResult bomb = read(defs + "</defs><use href='#a9'/>");
+    EXPECT_FALSE(bomb.scene);
+    EXPECT_NE(bomb.error.find("more than 1000000 elements once <use> is expanded"),
+              std::string::npos)
+        << bomb.error;
+    // Three levels (1000 rectangles) is fine, and each is drawn.
+    const SvgResult ok = read(defs + "</defs><use href='#a3'/>");
+    ASSERT_TRUE(ok.scene) << ok.error;
+    EXPECT_EQ(shapes(*ok.scene).size(), 1000u);
+}
+
+TEST(Switch, DrawsTheFirstChildWhoseConditionsHold) {
+    const std::string body = R"svg(<switch>
+        <rect systemLanguage="fr" width="1" height="1" fill="red"/>
+        <rect systemLanguage="de, en-US" width="2" height="2" fill="lime"/>
+        <rect width="3" height="3" fill="blue"/></switch>
+        <rect requiredExtensions="" width="9" height="9"/>
+        <rect systemLanguage="fr" width="9" height="9"/>)svg";
+    const SvgResult en = read(body);
+    ASSERT_TRUE(en.scene) << en.error;
+    ASSERT_EQ(shapes(*en.scene).size(), 1u);
+    EXPECT_EQ(shapes(*en.scene)[0]->fill->color, (Rgba{0, 1, 0, 1}));
+    SvgOptions french;
+    french.languages = {"fr-CA"};
+    const SvgResult fr = read(body, french);
+    ASSERT_EQ(shapes(*fr.scene).size(), 2u); // the switch's first, the last rect
+    EXPECT_EQ(shapes(*fr.scene)[0]->fill->color, (Rgba{1, 0, 0, 1}));
+    SvgOptions none;
+    none.languages = {"ja"};
+    EXPECT_EQ(shapes(*read(body, none).scene)[0]->fill->color, (Rgba{0, 0, 1, 1}));
+}
+
+TEST(Conditional, LanguageTagsMatchByPrefixEitherWay) {
+    const std::vector<std::string> en{"en"}, en_gb{"EN-gb"};
+    EXPECT_TRUE(conditions_hold({"en-US", {}}, en));
+    EXPECT_TRUE(conditions_hold({"fr, en", {}}, en_gb));
+    EXPECT_FALSE(conditions_hold({"eng", {}}, en));
+    EXPECT_FALSE(conditions_hold({"", {}}, en));
+    EXPECT_FALSE(conditions_hold({{}, ""}, en));
+    EXPECT_TRUE(conditions_hold({}, en));
+}
+
+TEST(TransformOrigin, TheTransformIsAppliedAboutIt) {
+    // rotate(90) about (15, 15): the 10 x 10 square at 10, 10 stays put.
+    const SvgResult r = read(R"svg(
+        <rect x="10" y="10" width="10" height="10" transform="rotate(90)" transform-origin="15 15"/>
+        <rect width="10" height="10" transform="scale(2)" style="transform-origin: center"/>
+        <rect width="10" height="10" transform="scale(2)" transform-origin="right bottom"/>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    const auto s = shapes(*r.scene);
+    expect_box(*s[0], {10, 10, 20, 20}, "rotated about its centre");
+    expect_box(*s[1], {-100, -100, -80, -80}, "scaled about the viewport's centre");
+    expect_box(*s[2], {-200, -200, -180, -180}, "about the viewport's corner");
+}
+
+} // namespace
+} // namespace casteljau
