@@ -98,6 +98,7 @@ BAD = {
     "not_svg.svg": r"1: the root element is <html>, not <svg>",
     "nested_groups_10k.svg": r"258: <g>: elements nested deeper than 256",
     "use_bomb.svg": r"1: <svg>: more than 1000000 elements once <use> is expanded",
+    "marker_bomb.svg": r"3: <path>: more than 1000000 elements once its markers are drawn",
     "path_attribute_50MB.svg": r"2: <path>: attribute d is 52428800 bytes, over the limit",
     "bpt_wrong_count.bpt": r"7: unexpected end of file",
     "bpt_nan.bpt": r"5: y: 'nan' is not a finite number",
@@ -124,6 +125,11 @@ RECOVERED = {
 }
 
 def generate_bad(folder):
+    # 200,000 vertices, each with a marker of 10 elements: 2M elements.
+    with open(os.path.join(folder, "marker_bomb.svg"), "w") as f:
+        f.write('<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10">\n<marker id="m">')
+        f.write('<rect width="1" height="1"/>' * 10 + '</marker>\n<path d="M0 0')
+        f.write(" l1 0" * 200000 + '" marker-mid="url(#m)"/>\n</svg>\n')
     with open(os.path.join(folder, "not_svg.svg"), "w") as f:
         f.write('<html xmlns="http://www.w3.org/1999/xhtml"><body/></html>\n')
     with open(os.path.join(folder, "nested_groups_10k.svg"), "w") as f:

@@ -152,6 +152,47 @@ TEST(Conditional, LanguageTagsMatchByPrefixEitherWay) {
     EXPECT_TRUE(conditions_hold({}, en));
 }
 
+TEST(Markers, DrawnAtEachVertexTurnedAndScaledByTheStroke) {
+    // A 2 x 2 marker box (markerUnits strokeWidth, stroke 3: 6 x 6 px) whose
+    // 10 x 10 view box puts its centre (refX, refY) on each vertex.
+    const SvgResult r = read(R"svg(<marker id="m" viewBox="0 0 10 10" refX="5" refY="5"
+        markerWidth="2" markerHeight="2" orient="auto"><rect width="10" height="4"/></marker>
+        <polyline points="10,10 50,10 50,50" fill="none" stroke="black" stroke-width="3"
+        marker-start="url(#m)" marker-mid="url(#m)" marker-end="url(#m)" opacity="0.5"/>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings.at(0).text();
+    // One group (the element's opacity) holding the polyline and 3 markers.
+    ASSERT_EQ(r.scene->root.children.size(), 1u);
+    EXPECT_EQ(std::get<Group>(r.scene->root.children[0].item).opacity, 0.5f);
+    const auto s = shapes(*r.scene);
+    ASSERT_EQ(s.size(), 4u);
+    EXPECT_EQ(s[0]->opacity, 1.0f);
+    // Start: along +x; the rect spans the box's top 0.4: x 7..13, y 7..9.4.
+    expect_box(*s[1], {7, 7, 13, 9.4}, "start marker");
+    // End: turned to +y (90 degrees): the rect's top edge is now at x = 53.
+    expect_box(*s[3], {50.6, 47, 53, 53}, "end marker, turned");
+    const Rect mid = device_bounds(*s[2]); // 45 degrees at the corner
+    EXPECT_NEAR((mid.x0 + mid.x1) / 2, 50 + 0.8 * std::cos(3.14159265358979 / 4) * 3, 3);
+}
+
+TEST(Markers, BrokenReferencesAndExpansionPastTheLimit) {
+    const SvgResult r = read(R"svg(<path d="M0 0 H10" stroke="red" marker-end="url(#none)"/>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].text().find("url(#none) names no marker"), std::string::npos);
+    // 300 vertices x a marker of 5 elements: over a limit of 1000.
+    std::string d = "M0 0";
+    for (int i = 0; i < 300; ++i) d += " L" + std::to_string(i) + " 1";
+    SvgOptions few;
+    few.max_elements = 1000;
+    const SvgResult big = read(R"svg(<marker id="m"><g><rect width="1" height="1"/><rect/><rect/>
+        </g></marker><path d=")svg" + d + R"svg(" marker-mid="url(#m)"/>)svg",
+                               few);
+    EXPECT_FALSE(big.scene);
+    EXPECT_NE(big.error.find("more than 1000 elements once its markers are drawn"), std::string::npos)
+        << big.error;
+}
+
 TEST(TransformOrigin, TheTransformIsAppliedAboutIt) {
     // rotate(90) about (15, 15): the 10 x 10 square at 10, 10 stays put.
     const SvgResult r = read(R"svg(

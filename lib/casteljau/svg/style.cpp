@@ -50,6 +50,18 @@ std::optional<PaintSpec> parse_paint(std::string_view v) {
     return std::nullopt;
 }
 
+// A marker reference: none, or url(#id) (quotes allowed); the id, "" for none.
+std::optional<std::string> parse_marker(std::string_view v) {
+    v = trim(v);
+    if (v == "none") return std::string();
+    if (v.rfind("url(", 0) != 0 || v.back() != ')') return std::nullopt;
+    std::string_view ref = trim(v.substr(4, v.size() - 5));
+    if (ref.size() >= 2 && (ref.front() == '"' || ref.front() == '\'') && ref.back() == ref.front())
+        ref = ref.substr(1, ref.size() - 2);
+    if (ref.size() < 2 || ref.front() != '#') return std::nullopt;
+    return std::string(ref.substr(1));
+}
+
 std::optional<float> parse_opacity(std::string_view v) {
     std::string_view rest;
     auto n = parse_number(v, &rest);
@@ -251,6 +263,21 @@ std::string apply_property(std::string_view name, std::string_view value, const 
     StrokeGeometry& g = s.stroke_geometry;
     const StrokeGeometry& pg = parent.stroke_geometry;
     if (name == "fill") return set(s.fill, parent.fill, parse_paint(value), kPaint);
+    constexpr const char* kMarker = "none or url(#id)";
+    if (name == "marker-start")
+        return set(s.marker_start, parent.marker_start, parse_marker(value), kMarker);
+    if (name == "marker-mid")
+        return set(s.marker_mid, parent.marker_mid, parse_marker(value), kMarker);
+    if (name == "marker-end")
+        return set(s.marker_end, parent.marker_end, parse_marker(value), kMarker);
+    if (name == "marker") {
+        const std::string e =
+            set(s.marker_start, parent.marker_start, parse_marker(value), kMarker);
+        if (e.empty()) s.marker_mid = s.marker_end = s.marker_start;
+        if (e.empty() && inherit)
+            s.marker_mid = parent.marker_mid, s.marker_end = parent.marker_end;
+        return e;
+    }
     if (name == "stroke") return set(s.stroke, parent.stroke, parse_paint(value), kPaint);
     if (name == "fill-opacity")
         return set(s.fill_opacity, parent.fill_opacity, parse_opacity(value), "an opacity");

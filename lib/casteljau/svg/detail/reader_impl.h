@@ -1,0 +1,171 @@
+// Internal to the SVG reader (not installed): the Reader class, whose work
+// is split by concern over svg/reader.cpp (the document, properties,
+// elements, shapes and paints) and svg/instancing.cpp (what one element
+// draws in another's place: use, symbol and nested svg viewports, markers,
+// and the count of what instancing expands to).
+#pragma once
+
+#include "casteljau/svg/detail/gradients.h"
+#include "casteljau/svg/marker_vertices.h"
+#include "casteljau/svg/reader.h"
+#include "casteljau/svg/style.h"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <optional>
+#include <pugixml.hpp>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace casteljau::svg_detail {
+
+struct Failure {
+    std::string message;
+};
+
+// Elements that are never rendered by themselves: skipped without a warning
+// (a marker is drawn only through the marker properties).
+inline bool silently_skipped(std::string_view n) {
+    return n == "title" || n == "desc" || n == "metadata" || n == "defs" || n == "linearGradient" ||
+           n == "radialGradient" || n == "stop" || n == "script" || n == "marker";
+}
+
+// SVG elements that change what a file shows and that this reader does not
+// draw yet: skipped with a warning. Any other element (but symbol, drawn only
+// through use) is unknown to SVG, and an unknown element is not rendered
+// (SVG 2, 5.9 "unknown elements"): no warning.
+inline bool unsupported(std::string_view n) {
+    static const std::set<std::string_view> names = {
+        "image", "text", "clipPath", "mask", "pattern", "filter", "style", "foreignObject"};
+    return names.count(n) != 0;
+}
+
+inline bool is_shape(std::string_view n) {
+    return n == "path" || n == "rect" || n == "circle" || n == "ellipse" || n == "line" ||
+           n == "polyline" || n == "polygon";
+}
+
+class Reader {
+  public:
+    Reader(std::string_view text, std::string name, const SvgOptions& options)
+        : text_(text), name_(std::move(name)), options_(options) {
+        for (std::size_t i = 0; i < text.size(); ++i)
+            if (text[i] == '\n') newlines_.push_back(i);
+    }
+
+    SvgResult run() {
+        SvgResult r;
+        try {
+            r.scene = read();
+        } catch (const Failure& f) {
+            r.error = f.message;
+        }
+        r.warnings = std::move(warnings_);
+        return r;
+    }
+
+  private:
+    int line_of(std::ptrdiff_t offset) const {
+        if (offset < 0) return 0;
+        return int(std::lower_bound(newlines_.begin(), newlines_.end(), std::size_t(offset)) -
+                   newlines_.begin()) +
+               1;
+    }
+    SvgDiagnostic located(const pugi::xml_node& n, const std::string& what) const {
+        return {name_, line_of(n.offset_debug()), n.name(), what};
+    }
+    [[noreturn]] void fail(const pugi::xml_node& n, const std::string& what) const {
+        throw Failure{located(n, what).text()};
+    }
+    [[noreturn]] void fail_at(std::ptrdiff_t offset, const std::string& what) const {
+        throw Failure{name_ + ":" + std::to_string(line_of(offset)) + ": " + what};
+    }
+    void warn(const pugi::xml_node& n, const std::string& what) {
+        if (!quiet_) warnings_.push_back(located(n, what));
+    }
+    // A problem the spec says how to recover from: a warning, and the caller
+    // recovers; with `strict`, the error that ends the read.
+    void problem(const pugi::xml_node& n, const std::string& what) {
+        if (quiet_) return;
+        if (options_.strict) fail(n, what);
+        warn(n, what);
+    }
+    LengthContext context(const StyleState& s) const {
+        return {s.font_size, root_font_size_, vw_, vh_};
+    }
+    std::optional<double> length(const pugi::xml_node& n, const char* attr, double percent_of,
+                                 const LengthContext& ctx);
+    Scene read();
+    std::optional<Affine> viewport(const pugi::xml_node& root, Scene& scene,
+                                   const LengthContext& ctx);
+    void check_length_limit(const pugi::xml_node& n, const pugi::xml_attribute& a) const {
+        if (const std::size_t len = std::strlen(a.value()); len > options_.max_attribute_bytes)
+            fail(n, std::string("attribute ") + a.name() + " is " + std::to_string(len) +
+                        " bytes, over the limit of " +
+                        std::to_string(options_.max_attribute_bytes) + " bytes");
+    }
+    void apply_declarations(const pugi::xml_node& n, const StyleState& parent, StyleState& style,
+                            ElementProps* props, const LengthContext& ctx);
+    void walk(const pugi::xml_node& parent, const StyleState& parent_style, const Affine& ctm,
+              Group& out, int depth) {
+        for (const pugi::xml_node& n : parent.children())
+            if (n.type() == pugi::node_element) element(n, parent_style, ctm, out, depth);
+    }
+    bool conditions_hold(const pugi::xml_node& n) const;
+    // Adds a group's children to `out`, or the group itself when it needs a
+    // layer (opacity below 1).
+    static void add_group(Group& out, Group g) {
+        if (g.opacity >= 1.0f)
+            std::move(g.children.begin(), g.children.end(), std::back_inserter(out.children));
+        else if (!g.children.empty())
+            out.children.push_back(Node{std::move(g)});
+    }
+    void element(const pugi::xml_node& n, const StyleState& parent_style, const Affine& ctm,
+                 Group& out, int depth);
+    void use(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out,
+             int depth);
+    void nested_viewport(const pugi::xml_node& n, const pugi::xml_node& sizes,
+                         const StyleState& style, const Affine& m, Group& out, int depth);
+    std::size_t expanded_size(const pugi::xml_node& n, int depth);
+    StyleState style_of(const pugi::xml_node& n, ElementProps& props);
+    void markers(const pugi::xml_node& n, const Shape& s, const StyleState& style, Group& out,
+                 int depth);
+    void marker(const pugi::xml_node& mk, const MarkerVertex& v, const Shape& s,
+                double stroke_width, Group& out, int depth);
+    pugi::xml_node by_id(const std::string& id);
+    std::optional<Shape> shape(const pugi::xml_node& n, std::string_view name,
+                               const StyleState& style, const Affine& m, const ElementProps& props);
+    // A paint: a color, or a gradient by url(#id) with its fallback color
+    // when the reference names no usable gradient (SVG 1.1, 11.2).
+    struct ResolvedPaint {
+        Rgba color;
+        std::shared_ptr<const Gradient> gradient;
+    };
+    std::optional<ResolvedPaint> paint(const pugi::xml_node& n, const PaintSpec& spec,
+                                       const StyleState& style);
+    std::optional<double> non_negative(const pugi::xml_node& n, const char* attr,
+                                       std::optional<double> v);
+    Path geometry(const pugi::xml_node& n, std::string_view name, const LengthContext& ctx);
+
+    std::string_view text_;
+    std::string name_;
+    SvgOptions options_;
+    std::vector<std::size_t> newlines_;
+    std::vector<SvgDiagnostic> warnings_;
+    std::set<std::string> warned_;
+    std::size_t elements_ = 0;
+    double root_font_size_ = 16;
+    double vw_ = 0, vh_ = 0; // viewport size in user units, for percentages
+    std::optional<svg_detail::GradientIndex> gradients_;
+    pugi::xml_node root_;
+    std::map<std::string, pugi::xml_node> ids_; // built at the first <use>
+    std::vector<pugi::xml_node> instancing_;    // the <use> targets being drawn
+    std::map<const void*, std::size_t> sizes_;
+    bool quiet_ = false; // style_of re-reads ancestors: their problems were told  //
+                         // expanded_size's, per element
+};
+
+} // namespace casteljau::svg_detail

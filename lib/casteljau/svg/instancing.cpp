@@ -1,0 +1,303 @@
+// What one element draws in another's place, resolved at read time: <use>
+// (its target, or a symbol or svg as a viewport), nested <svg> viewports,
+// markers (SVG 2, 13.7: a marker's content drawn at each vertex of a path,
+// line, polyline or polygon, as groups after the shape), and, before any of
+// it is built, the count of what instancing expands to.
+#include "casteljau/svg/detail/reader_impl.h"
+#include "casteljau/svg/viewport.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace casteljau::svg_detail {
+
+// <use> (SVG 1.1, 5.6; SVG 2, 5.6): the referenced element drawn as if it
+// were the use's child, inheriting the use's style, moved by x, y; a
+// <symbol> or <svg> becomes a viewport of the use's width and height. A
+// reference to itself or to an element being instanced (a cycle) is a
+// problem, and nothing is drawn.
+void Reader::use(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out,
+                 int depth) {
+    const char* href =
+        n.attribute("href") ? n.attribute("href").value() : n.attribute("xlink:href").value();
+    const pugi::xml_node target = href[0] == '#' ? by_id(href + 1) : pugi::xml_node();
+    if (!target) {
+        if (href[0]) problem(n, std::string("href '") + href + "' names no element; skipped");
+        return;
+    }
+    for (pugi::xml_node a = n; a; a = a.parent())
+        if (a == target)
+            return problem(n, std::string("href '") + href + "' contains the use itself; skipped");
+    if (std::find(instancing_.begin(), instancing_.end(), target) != instancing_.end())
+        return problem(n, std::string("href '") + href + "' makes a cycle; skipped");
+    const LengthContext ctx = context(style);
+    const auto at = [&](const char* attr, double percent_of) {
+        return length(n, attr, percent_of, ctx).value_or(0);
+    };
+    const Affine moved = m * Affine::translate({at("x", vw_), at("y", vh_)});
+    instancing_.push_back(target);
+    const std::string_view kind = target.name();
+    if (kind == "symbol" || kind == "svg") {
+        if (conditions_hold(target)) {
+            StyleState inner = style;
+            ElementProps props;
+            apply_declarations(target, style, inner, nullptr, ctx);
+            apply_declarations(target, style, inner, &props, context(inner));
+            if (!props.display_none) {
+                Group g{props.opacity, {}};
+                nested_viewport(target, n, inner, moved, g, depth + 1);
+                add_group(out, std::move(g));
+            }
+        }
+    } else {
+        element(target, style, moved, out, depth + 1);
+    }
+    instancing_.pop_back();
+}
+
+// A new viewport (SVG 1.1, 7.9): a nested <svg>, or a <symbol> or <svg>
+// instanced by a <use>. Its x, y, width and height come from `sizes` (the
+// element itself, or the use: x and y are the use's translation then, and
+// its width and height win over the element's), percentages of the
+// enclosing viewport; width and height are 100% when absent; a negative
+// one is an error and a zero one disables rendering. Its viewBox,
+// preserveAspectRatio and, for a symbol, refX and refY (SVG 2) map its
+// content. Percentages inside refer to it. Not clipped to it yet: the
+// overflow property needs clip paths.
+void Reader::nested_viewport(const pugi::xml_node& n, const pugi::xml_node& sizes,
+                             const StyleState& style, const Affine& m, Group& out, int depth) {
+    const LengthContext ctx = context(style);
+    const auto side = [&](const char* attr, double full) -> std::optional<double> {
+        std::optional<double> v = length(sizes, attr, full, ctx);
+        if (!v && sizes != n) v = length(n, attr, full, ctx);
+        return non_negative(sizes, attr, v ? v : full);
+    };
+    const auto w = side("width", vw_), h = side("height", vh_);
+    if (!w || !h || *w == 0 || *h == 0) return;
+    Affine inner = m;
+    if (sizes == n) {
+        inner = inner * Affine::translate({length(n, "x", vw_, ctx).value_or(0),
+                                           length(n, "y", vh_, ctx).value_or(0)});
+    }
+    std::optional<ViewBox> box;
+    if (const pugi::xml_attribute a = n.attribute("viewBox")) {
+        ViewBoxResult vb = parse_view_box(a.value());
+        if (!vb.error.empty()) problem(n, vb.error);
+        box = vb.box;
+        if (box && (box->w == 0 || box->h == 0)) return;
+    }
+    // refX, refY (SVG 2, 5.5): the symbol's point placed at the use's x, y.
+    // Absent, the viewport's corner is (the point is not 0 0: that would
+    // undo the alignment, which librsvg and browsers keep).
+    std::optional<Point> ref;
+    if (std::string_view(n.name()) == "symbol" && (n.attribute("refX") || n.attribute("refY")))
+        ref =
+            Point{length(n, "refX", vw_, ctx).value_or(0), length(n, "refY", vh_, ctx).value_or(0)};
+    Affine view = Affine::identity();
+    if (box) {
+        AspectRatio ar;
+        if (const pugi::xml_attribute a = n.attribute("preserveAspectRatio")) {
+            if (const auto parsed = parse_aspect_ratio(a.value()))
+                ar = *parsed;
+            else
+                problem(n, std::string("preserveAspectRatio: '") + a.value() +
+                               "' is invalid; xMidYMid meet is used");
+        }
+        view = view_box_transform(*box, ar, 0, 0, *w, *h);
+    }
+    if (ref) view = Affine::translate(Point{0, 0} - view * *ref) * view;
+    inner = inner * view;
+    const double saved_w = vw_, saved_h = vh_;
+    vw_ = box ? box->w : *w;
+    vh_ = box ? box->h : *h;
+    walk(n, style, inner, out, depth + 1);
+    vw_ = saved_w, vh_ = saved_h;
+}
+
+// How many elements the walk would visit under `n`, <use> instances
+// counted as their targets' trees, saturating just past the limit: a nest
+// of uses that would expand to 10^9 elements (billion laughs) is refused
+// before any of it is built, in time linear in the document (each
+// target's count is kept). Recursion is as deep as the nesting depth
+// limit: deeper, the walk will stop with that limit's error.
+std::size_t Reader::expanded_size(const pugi::xml_node& n, int depth) {
+    const std::size_t over = options_.max_elements + 1;
+    if (depth > options_.max_depth) return 1;
+    if (const auto it = sizes_.find(n.internal_object()); it != sizes_.end()) return it->second;
+    sizes_[n.internal_object()] = 1; // a cycle back to n: the walk skips it
+    std::size_t total = 1;
+    if (std::string_view(n.name()) == "use") {
+        const char* href =
+            n.attribute("href") ? n.attribute("href").value() : n.attribute("xlink:href").value();
+        if (const pugi::xml_node t = href[0] == '#' ? by_id(href + 1) : pugi::xml_node())
+            total += expanded_size(t, depth + 1);
+    } else if (!silently_skipped(n.name())) {
+        for (const pugi::xml_node& c : n.children())
+            if (c.type() == pugi::node_element)
+                total = std::min(over, total + expanded_size(c, depth + 1));
+    }
+    return sizes_[n.internal_object()] = std::min(over, total);
+}
+
+pugi::xml_node Reader::by_id(const std::string& id) {
+    if (ids_.empty()) {
+        struct Walker : pugi::xml_tree_walker {
+            std::map<std::string, pugi::xml_node>* map;
+            bool for_each(pugi::xml_node& e) override {
+                if (e.type() == pugi::node_element)
+                    if (const pugi::xml_attribute a = e.attribute("id"))
+                        map->emplace(a.value(), e); // the first of an id wins
+                return true;
+            }
+        } walker;
+        walker.map = &ids_;
+        root_.traverse(walker);
+        ids_.emplace("", pugi::xml_node()); // indexed: not empty any more
+    }
+    const auto it = ids_.find(id);
+    return it == ids_.end() ? pugi::xml_node() : it->second;
+}
+
+// The computed style of an element from its document ancestors (a marker's
+// content inherits from the marker's ancestors, not from the path that uses
+// it), and its own non-inherited properties. Quiet: the walk tells the
+// problems of the elements it reaches.
+StyleState Reader::style_of(const pugi::xml_node& n, ElementProps& props) {
+    std::vector<pugi::xml_node> chain;
+    for (pugi::xml_node a = n; a && a.type() == pugi::node_element; a = a.parent())
+        chain.push_back(a);
+    StyleState s;
+    quiet_ = true;
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+        StyleState next = s;
+        props = {};
+        apply_declarations(*it, s, next, nullptr, context(s));
+        apply_declarations(*it, s, next, &props, context(next));
+        s = std::move(next);
+    }
+    quiet_ = false;
+    return s;
+}
+
+void Reader::markers(const pugi::xml_node& n, const Shape& s, const StyleState& style, Group& out,
+                     int depth) {
+    const std::vector<MarkerVertex> vertices = marker_vertices(s.path);
+    const auto id_of = [&](MarkerSlot slot) -> const std::string& {
+        return slot == MarkerSlot::Start ? style.marker_start
+               : slot == MarkerSlot::End ? style.marker_end
+                                         : style.marker_mid;
+    };
+    // Markers on every vertex of a long path can expand past the element
+    // limit: counted before any is built.
+    std::size_t total = 0;
+    for (const MarkerVertex& v : vertices)
+        if (const std::string& id = id_of(v.slot); !id.empty())
+            if (const pugi::xml_node mk = by_id(id))
+                for (const pugi::xml_node& c : mk.children()) // the marker itself is skipped
+                    if (c.type() == pugi::node_element)
+                        total = std::min(total + expanded_size(c, depth + 1),
+                                         options_.max_elements + 1);
+    if (elements_ + total > options_.max_elements)
+        fail(n, "more than " + std::to_string(options_.max_elements) +
+                    " elements once its markers are drawn (the limit)");
+    for (const MarkerVertex& v : vertices) {
+        const std::string& id = id_of(v.slot);
+        if (id.empty()) continue;
+        const pugi::xml_node mk = by_id(id);
+        if (!mk || std::strcmp(mk.name(), "marker") != 0) {
+            if (warned_.insert("marker:" + id).second)
+                problem(n, "url(#" + id + ") names no marker; none is drawn");
+            continue;
+        }
+        if (std::find(instancing_.begin(), instancing_.end(), mk) != instancing_.end()) {
+            problem(n, "marker #" + id + " is drawn inside itself; skipped");
+            continue;
+        }
+        marker(mk, v, s, style.stroke_geometry.width, out, depth);
+    }
+}
+
+namespace {
+
+// orient (SVG 2, 13.7.2): auto, auto-start-reverse, or an angle (a number
+// of degrees, or with deg, grad, rad or turn).
+std::optional<double> fixed_orient_deg(std::string_view v) {
+    std::string_view unit;
+    const auto a = parse_number(v, &unit);
+    if (!a) return std::nullopt;
+    const std::pair<std::string_view, double> units[] = {
+        {"", 1}, {"deg", 1}, {"grad", 0.9}, {"rad", 180 / std::numbers::pi}, {"turn", 360}};
+    for (const auto& [name, k] : units)
+        if (unit == name) return *a * k;
+    return std::nullopt;
+}
+
+} // namespace
+
+// One marker at one vertex: its viewport of markerWidth x markerHeight
+// (default 3 x 3; scaled by the stroke width unless markerUnits is
+// userSpaceOnUse), its viewBox and preserveAspectRatio, refX/refY (in
+// view-box units) on the vertex, turned by orient. Not clipped to its
+// viewport yet (overflow needs clip paths).
+void Reader::marker(const pugi::xml_node& mk, const MarkerVertex& v, const Shape& s,
+                    double stroke_width, Group& out, int depth) {
+    ElementProps props;
+    const StyleState style = style_of(mk, props);
+    const LengthContext ctx = context(style);
+    const auto size = [&](const char* attr) {
+        return non_negative(mk, attr,
+                            length(mk, attr, attr[6] == 'W' ? vw_ : vh_, ctx).value_or(3));
+    };
+    const auto w = size("markerWidth"), h = size("markerHeight");
+    if (!w || !h || *w == 0 || *h == 0) return;
+    double k = stroke_width;
+    if (const pugi::xml_attribute u = mk.attribute("markerUnits")) {
+        const std::string_view units = u.value();
+        if (units == "userSpaceOnUse")
+            k = 1;
+        else if (units != "strokeWidth")
+            problem(mk,
+                    "markerUnits: '" + std::string(units) + "' is invalid; strokeWidth is used");
+    }
+    double angle = 0;
+    if (const pugi::xml_attribute o = mk.attribute("orient")) {
+        const std::string_view orient = o.value();
+        if (orient == "auto")
+            angle = v.angle_deg;
+        else if (orient == "auto-start-reverse")
+            angle = v.angle_deg + (v.slot == MarkerSlot::Start ? 180 : 0);
+        else if (const auto fixed = fixed_orient_deg(orient))
+            angle = *fixed;
+        else
+            problem(mk, "orient: '" + std::string(orient) + "' is invalid; 0 is used");
+    }
+    Affine view = Affine::identity();
+    if (const pugi::xml_attribute a = mk.attribute("viewBox")) {
+        ViewBoxResult vb = parse_view_box(a.value());
+        if (!vb.error.empty()) problem(mk, vb.error);
+        if (vb.box && (vb.box->w == 0 || vb.box->h == 0)) return;
+        if (vb.box) {
+            AspectRatio ar;
+            if (const pugi::xml_attribute p = mk.attribute("preserveAspectRatio")) {
+                if (const auto parsed = parse_aspect_ratio(p.value()))
+                    ar = *parsed;
+                else
+                    problem(mk, std::string("preserveAspectRatio: '") + p.value() +
+                                    "' is invalid; xMidYMid meet is used");
+            }
+            view = view_box_transform(*vb.box, ar, 0, 0, *w, *h);
+        }
+    }
+    const Point ref{length(mk, "refX", vw_, ctx).value_or(0),
+                    length(mk, "refY", vh_, ctx).value_or(0)};
+    const Affine m = s.transform * Affine::translate(v.at - Point{0, 0}) *
+                     Affine::rotate(angle * std::numbers::pi / 180) * Affine::scale(k) *
+                     Affine::translate(Point{0, 0} - view * ref) * view;
+    Group g{props.opacity, {}};
+    instancing_.push_back(mk);
+    walk(mk, style, m, g, depth + 1);
+    instancing_.pop_back();
+    add_group(out, std::move(g));
+}
+
+} // namespace casteljau::svg_detail
