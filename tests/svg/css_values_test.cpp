@@ -139,5 +139,41 @@ TEST(Color, CurrentColorAndFallbacksThroughTheCascade) {
     EXPECT_EQ(shape_at(*r.scene, 3).fill->color, (Rgba{0, 1, 0, 1}));
 }
 
+TEST(StyleSheet, CascadeOrderInTheReader) {
+    // Presentation attribute < sheet < style attribute < sheet !important <
+    // style attribute !important; a sheet's font-size is used by em lengths.
+    const std::string svg = R"svg(<svg width="100" height="100">
+        <style>
+          rect { fill: red } .a { fill: lime } .b { fill: blue !important }
+          .em { font-size: 20px }
+          [broken { fill: black }
+        </style>
+        <style type="text/x-other">rect { fill: black }</style>
+        <rect width="1" height="1" fill="black"/>
+        <rect width="1" height="1" class="a" style="fill: navy"/>
+        <rect width="1" height="1" class="b" style="fill: navy"/>
+        <rect width="1" height="1" class="b" style="fill: teal !important"/>
+        <rect width="2em" height="1" class="em"/></svg>)svg";
+    const SvgResult r = parse_svg(svg, "c.svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    EXPECT_EQ(shape_at(*r.scene, 0).fill->color, (Rgba{1, 0, 0, 1})); // sheet > attribute
+    EXPECT_EQ(shape_at(*r.scene, 1).fill->color, (Rgba{0, 0, 128 / 255.0f, 1})); // style > sheet
+    EXPECT_EQ(shape_at(*r.scene, 2).fill->color, (Rgba{0, 0, 1, 1})); // !important > style
+    EXPECT_EQ(shape_at(*r.scene, 3).fill->color, (Rgba{0, 128 / 255.0f, 128 / 255.0f, 1}));
+    EXPECT_NEAR(shape_at(*r.scene, 4).path.bounds().width(), 40, 1e-12);
+    // The broken rule: one warning, on the document's line of the rule.
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_EQ(r.warnings[0].line, 5) << r.warnings[0].text();
+    SvgOptions strict;
+    strict.strict = true;
+    EXPECT_FALSE(parse_svg(svg, "c.svg", strict).scene);
+    // An at-rule this reader skips is worth a warning, not an error.
+    const SvgResult media = parse_svg(
+        "<svg width='9' height='9'><style>@media print { rect { fill: red } }</style></svg>",
+        "m.svg", strict);
+    ASSERT_TRUE(media.scene) << media.error;
+    EXPECT_EQ(media.warnings.size(), 1u);
+}
+
 } // namespace
 } // namespace casteljau

@@ -3,6 +3,7 @@
 #include "casteljau/curve/path_data.h"
 #include "casteljau/io/text_file.h"
 #include "casteljau/svg/conditional.h"
+#include "casteljau/svg/detail/css_pugi.h"
 #include "casteljau/svg/detail/reader_impl.h"
 #include "casteljau/svg/shapes.h"
 #include "casteljau/svg/transform_list.h"
@@ -46,6 +47,7 @@ Scene Reader::read() {
     if (std::strcmp(root.name(), "svg") != 0)
         fail_at(root.offset_debug(),
                 std::string("the root element is <") + root.name() + ">, not <svg>");
+    read_style_sheets(root);
     Scene scene;
     StyleState style;
     // The root's font-size first: it is what rem means, and its own
@@ -115,31 +117,90 @@ std::optional<Affine> Reader::viewport(const pugi::xml_node& root, Scene& scene,
     return view_box_transform(*box, ar, 0, 0, scene.width, scene.height);
 }
 
-// The element's presentation attributes, then its style attribute's
-// declarations (which win, 6.4). Without `props`, only font-size: the
-// first of two passes, since every other length may be in em. An
-// invalid value is a problem, and the property keeps what it had.
+// The element's declarations in cascade order (CSS Cascade 4, 6.1; SVG 2,
+// 6.9), each later one winning: presentation attributes, the style sheets'
+// normal declarations (ascending specificity, then source order), the style
+// attribute's normal ones, the sheets' !important ones, the style
+// attribute's !important ones. Without `props`, only font-size: the first of
+// two passes, since every other length may be in em. An invalid value is a
+// problem, and the property keeps what it had.
 void Reader::apply_declarations(const pugi::xml_node& n, const StyleState& parent,
                                 StyleState& style, ElementProps* props, const LengthContext& ctx) {
     ElementProps unused;
-    const auto apply = [&](std::string_view name, std::string_view value, bool in_style) {
+    const auto apply = [&](std::string_view name, std::string_view value, const char* from) {
         if ((name == "font-size") == (props != nullptr)) return;
         const std::string e =
             apply_property(name, value, parent, style, props ? *props : unused, ctx);
-        if (!e.empty()) problem(n, (in_style ? "style: " : "") + e + "; ignored");
+        if (!e.empty()) problem(n, from + e + "; ignored");
     };
     for (const pugi::xml_attribute& a : n.attributes()) {
         if (!props) check_length_limit(n, a);
-        if (std::strcmp(a.name(), "style") != 0) apply(a.name(), a.value(), false);
+        if (std::strcmp(a.name(), "style") != 0) apply(a.name(), a.value(), "");
     }
+    const std::vector<const CssDeclaration*>& sheet = matched(n);
+    std::vector<CssDeclaration> inline_style;
     if (const pugi::xml_attribute a = n.attribute("style")) {
-        std::vector<std::string_view> malformed;
-        for (const Declaration& d : split_style_attribute(a.value(), malformed))
-            apply(d.name, d.value, true);
+        std::vector<CssProblem> problems;
+        inline_style = parse_css_declarations(a.value(), problems);
         if (props)
-            for (const std::string_view m : malformed)
-                problem(n, "style: '" + std::string(m) + "' is not a declaration; ignored");
+            for (const CssProblem& p : problems) problem(n, "style: " + p.message);
     }
+    for (const bool important : {false, true}) {
+        for (const CssDeclaration* d : sheet)
+            if (d->important == important) apply(d->name, d->value, "style sheet: ");
+        for (const CssDeclaration& d : inline_style)
+            if (d.important == important) apply(d.name, d.value, "style: ");
+    }
+}
+
+// The style sheet declarations matching `n`, kept for the element's second
+// pass (and for style_of's repeated ones).
+const std::vector<const CssDeclaration*>& Reader::matched(const pugi::xml_node& n) {
+    if (!matcher_ || n == matched_node_) return matched_;
+    matched_node_ = n;
+    if (!matcher_->match(PugiCssTree::node(n), matched_))
+        fail(n, "style sheets: more than " + std::to_string(kCssDefaultMaxWork) +
+                    " selector tests (the limit)");
+    return matched_;
+}
+
+// Every <style> element's sheet (type text/css, empty or absent), in
+// document order, before any element is styled: a sheet applies to the
+// whole document. Its text is its character data, CDATA included.
+void Reader::read_style_sheets(const pugi::xml_node& root) {
+    std::vector<pugi::xml_node> styles;
+    struct Walker : pugi::xml_tree_walker {
+        std::vector<pugi::xml_node>* out;
+        bool for_each(pugi::xml_node& e) override {
+            if (e.type() == pugi::node_element && std::strcmp(e.name(), "style") == 0)
+                out->push_back(e);
+            return true;
+        }
+    } walker;
+    walker.out = &styles;
+    pugi::xml_node(root).traverse(walker);
+    for (const pugi::xml_node& st : styles) {
+        const std::string_view type = st.attribute("type").value();
+        if (!type.empty() && type != "text/css") continue;
+        std::string css;
+        for (const pugi::xml_node& c : st.children())
+            if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) css += c.value();
+        if (css.size() > options_.max_attribute_bytes)
+            fail(st, "a style sheet of " + std::to_string(css.size()) +
+                         " bytes, over the limit of " +
+                         std::to_string(options_.max_attribute_bytes) + " bytes");
+        std::vector<CssProblem> problems;
+        sheet_.parse(css, problems);
+        for (const CssProblem& p : problems) {
+            // The problem's line within the sheet, from the <style> element's.
+            SvgDiagnostic d = located(st, "style sheet: " + p.message);
+            d.line += p.line - 1;
+            if (quiet_) continue;
+            if (options_.strict && !p.unsupported) throw Failure{d.text()};
+            warnings_.push_back(std::move(d));
+        }
+    }
+    if (!sheet_.empty()) matcher_ = std::make_unique<CssMatcher>(sheet_, css_tree_);
 }
 
 // Whether the element's conditional attributes let it be rendered.

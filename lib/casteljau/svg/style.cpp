@@ -331,25 +331,4 @@ std::string apply_property(std::string_view name, std::string_view value, const 
     return "";
 }
 
-std::vector<Declaration> split_style_attribute(std::string_view css,
-                                               std::vector<std::string_view>& malformed) {
-    std::vector<Declaration> out;
-    while (!css.empty()) {
-        const std::size_t semi = css.find(';');
-        const std::string_view decl = trim(css.substr(0, semi));
-        css = semi == css.npos ? std::string_view() : css.substr(semi + 1);
-        if (decl.empty()) continue;
-        const std::size_t colon = decl.find(':');
-        if (colon == decl.npos || trim(decl.substr(0, colon)).empty()) {
-            malformed.push_back(decl);
-            continue;
-        }
-        std::string_view value = trim(decl.substr(colon + 1));
-        if (value.size() >= 10 && value.substr(value.size() - 10) == "!important")
-            value = trim(value.substr(0, value.size() - 10));
-        out.push_back({trim(decl.substr(0, colon)), value});
-    }
-    return out;
-}
-
 } // namespace casteljau

@@ -83,17 +83,6 @@ struct ElementProps {
 std::string apply_property(std::string_view name, std::string_view value, const StyleState& parent,
                            StyleState& style, ElementProps& props, const LengthContext& ctx);
 
-/// One declaration of a `style` attribute: "name: value".
-struct Declaration {
-    std::string_view name, value;
-};
-
-/// Splits a `style` attribute into its declarations, in order, without
-/// `!important`. A piece without a colon is not a declaration: it is skipped
-/// (CSS drops it) and its text added to `malformed`.
-std::vector<Declaration> split_style_attribute(std::string_view css,
-                                               std::vector<std::string_view>& malformed);
-
 /// A number (CSS's <number>, with an optional leading '+'): nullopt when
 /// malformed or not finite. With `rest`, what follows the number goes there
 /// (a unit, say); without, anything but whitespace after it is an error.

@@ -5,6 +5,8 @@
 // and the count of what instancing expands to).
 #pragma once
 
+#include "casteljau/svg/css.h"
+#include "casteljau/svg/detail/css_pugi.h"
 #include "casteljau/svg/detail/gradients.h"
 #include "casteljau/svg/marker_vertices.h"
 #include "casteljau/svg/reader.h"
@@ -13,6 +15,7 @@
 #include <algorithm>
 #include <cstring>
 #include <map>
+#include <memory>
 #include <optional>
 #include <pugixml.hpp>
 #include <set>
@@ -30,7 +33,7 @@ struct Failure {
 // (a marker is drawn only through the marker properties).
 inline bool silently_skipped(std::string_view n) {
     return n == "title" || n == "desc" || n == "metadata" || n == "defs" || n == "linearGradient" ||
-           n == "radialGradient" || n == "stop" || n == "script" || n == "marker";
+           n == "radialGradient" || n == "stop" || n == "script" || n == "marker" || n == "style";
 }
 
 // SVG elements that change what a file shows and that this reader does not
@@ -38,8 +41,8 @@ inline bool silently_skipped(std::string_view n) {
 // through use) is unknown to SVG, and an unknown element is not rendered
 // (SVG 2, 5.9 "unknown elements"): no warning.
 inline bool unsupported(std::string_view n) {
-    static const std::set<std::string_view> names = {
-        "image", "text", "clipPath", "mask", "pattern", "filter", "style", "foreignObject"};
+    static const std::set<std::string_view> names = {"image",   "text",   "clipPath",     "mask",
+                                                     "pattern", "filter", "foreignObject"};
     return names.count(n) != 0;
 }
 
@@ -115,6 +118,8 @@ class Reader {
             if (n.type() == pugi::node_element) element(n, parent_style, ctm, out, depth);
     }
     bool conditions_hold(const pugi::xml_node& n) const;
+    void read_style_sheets(const pugi::xml_node& root);
+    const std::vector<const CssDeclaration*>& matched(const pugi::xml_node& n);
     // Adds a group's children to `out`, or the group itself when it needs a
     // layer (opacity below 1).
     static void add_group(Group& out, Group g) {
@@ -164,6 +169,11 @@ class Reader {
     std::map<std::string, pugi::xml_node> ids_; // built at the first <use>
     std::vector<pugi::xml_node> instancing_;    // the <use> targets being drawn
     std::map<const void*, std::size_t> sizes_;
+    StyleSheet sheet_;
+    PugiCssTree css_tree_;
+    std::unique_ptr<CssMatcher> matcher_; // none without style sheets
+    pugi::xml_node matched_node_;         // the element matched_ is for
+    std::vector<const CssDeclaration*> matched_;
     bool quiet_ = false; // style_of re-reads ancestors: their problems were told  //
                          // expanded_size's, per element
 };
