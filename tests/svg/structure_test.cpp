@@ -193,6 +193,32 @@ TEST(Markers, BrokenReferencesAndExpansionPastTheLimit) {
         << big.error;
 }
 
+TEST(Painting, PaintOrderAndShapeRendering) {
+    const SvgResult r = read(R"svg(<marker id="m"><rect width="1" height="1"/></marker>
+        <rect width="5" height="5" stroke="red" paint-order="stroke"/>
+        <rect width="5" height="5" stroke="red" paint-order="normal" shape-rendering="crispEdges"/>
+        <path d="M0 0 H5 V5" stroke="red" marker-mid="url(#m)" paint-order="fill markers"/>
+        <path d="M0 0 H5 V5" stroke="red" marker-mid="url(#m)" paint-order="markers"/>
+        <rect width="5" height="5" paint-order="fill fill"/>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    const auto s = shapes(*r.scene);
+    ASSERT_EQ(s.size(), 8u);
+    EXPECT_TRUE(s[0]->stroke_first);
+    EXPECT_FALSE(s[1]->stroke_first);
+    EXPECT_TRUE(s[0]->antialias);
+    EXPECT_FALSE(s[1]->antialias);
+    // fill, markers, stroke: the path split around its marker.
+    EXPECT_TRUE(s[2]->fill && !s[2]->stroke);
+    EXPECT_EQ(s[3]->path.segment_count(), 4u); // the marker's rect
+    EXPECT_TRUE(!s[4]->fill && s[4]->stroke);
+    // markers first: under the whole shape.
+    EXPECT_EQ(s[5]->path.segment_count(), 4u);
+    EXPECT_TRUE(s[6]->fill && s[6]->stroke);
+    // "fill fill" is invalid: normal, with a warning.
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].text().find("property paint-order"), std::string::npos);
+}
+
 TEST(TransformOrigin, TheTransformIsAppliedAboutIt) {
     // rotate(90) about (15, 15): the 10 x 10 square at 10, 10 stays put.
     const SvgResult r = read(R"svg(

@@ -181,6 +181,8 @@ void Renderer::draw_shape(const Shape& s, Target& target, float opacity) {
     // the target's rows only (see EdgeList); spans are cut to the target's
     // columns when composited (paint). So a band, a layer or a dirty tile
     // gets the same edges and coverage as the whole frame, bit for bit.
+    // paint-order: the fill under the stroke (SVG's normal), or over it.
+    if (s.stroke && s.stroke_first) draw_stroke(s, m, target, opacity);
     if (s.fill) {
         const auto t = stage_start(*options_);
         edges_.reset(frame_, target.origin_y(), target.origin_y() + target.height());
@@ -192,7 +194,7 @@ void Renderer::draw_shape(const Shape& s, Target& target, float opacity) {
         paint(s, s.fill->color, s.fill->gradient.get(), s.fill->opacity * opacity, s.fill->rule,
               target);
     }
-    if (s.stroke) draw_stroke(s, m, target, opacity);
+    if (s.stroke && !s.stroke_first) draw_stroke(s, m, target, opacity);
 }
 
 template <class Target>
@@ -259,16 +261,17 @@ template <class Target>
 void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float opacity,
                      FillRule rule, Target& target) {
     const auto t = stage_start(*options_);
+    const bool antialias = options_->antialias && s.antialias;
     // Spans are cut to the target's columns (the edges are the frame's),
     // unless the target has all of the frame's columns (a band).
     const auto fill_through = [&](SpanSink& painter) {
         const int x0 = target.origin_x(), x1 = x0 + target.width();
         if (x0 <= edges_.clip().x0 && edges_.clip().x1 <= x1) {
-            raster_.fill(edges_, rule, options_->antialias, painter);
+            raster_.fill(edges_, rule, antialias, painter);
             return;
         }
         ColumnClipSink clipped(painter, x0, x1);
-        raster_.fill(edges_, rule, options_->antialias, clipped);
+        raster_.fill(edges_, rule, antialias, clipped);
     };
     if (gradient) {
         // Gradient space -> device: the shape's transform, then for

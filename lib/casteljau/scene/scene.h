@@ -57,6 +57,11 @@ struct Shape {
     std::optional<Fill> fill;
     std::optional<Stroke> stroke;
     float opacity = 1; ///< the element's own opacity
+    /// Stroke drawn before the fill (SVG 2 paint-order: stroke fill), not after.
+    bool stroke_first = false;
+    /// Antialiased edges; false samples pixel centres, for this shape only
+    /// (SVG shape-rendering: crispEdges and optimizeSpeed).
+    bool antialias = true;
     int source_line = 0;
 };
 

@@ -271,8 +271,28 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
         sh->opacity = 1;
         Group marks{1, {}}; // not into g: its shape must stay where it is meanwhile
         markers(n, *sh, style, marks, depth);
-        g.children.push_back(Node{std::move(*sh)});
-        add_group(g, std::move(marks));
+        // paint-order with markers: before both paints, between them (the
+        // shape split into its fill and its stroke), or after both.
+        const std::array<int, 3>& po = style.paint_order;
+        if (po[2] > po[0] && po[2] > po[1]) {
+            g.children.push_back(Node{std::move(*sh)});
+            add_group(g, std::move(marks));
+        } else if (po[2] < po[0] && po[2] < po[1]) {
+            add_group(g, std::move(marks));
+            g.children.push_back(Node{std::move(*sh)});
+        } else {
+            Shape before = *sh;
+            if (po[0] < po[1]) {
+                before.stroke.reset(); // fill, markers, stroke
+                sh->fill.reset();
+            } else {
+                before.fill.reset(); // stroke, markers, fill
+                sh->stroke.reset();
+            }
+            g.children.push_back(Node{std::move(before)});
+            add_group(g, std::move(marks));
+            g.children.push_back(Node{std::move(*sh)});
+        }
     }
     add_group(out, std::move(g));
 }
@@ -287,6 +307,8 @@ std::optional<Shape> Reader::shape(const pugi::xml_node& n, std::string_view nam
     s.transform = m;
     s.opacity = props.opacity;
     s.source_line = line_of(n.offset_debug());
+    s.stroke_first = style.paint_order[1] < style.paint_order[0];
+    s.antialias = style.antialias;
     if (const auto p = paint(n, style.fill, style))
         s.fill = Fill{p->color, p->gradient, style.fill_opacity, style.fill_rule};
     if (const auto p = paint(n, style.stroke, style); p && style.stroke_geometry.width > 0)

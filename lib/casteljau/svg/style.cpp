@@ -62,6 +62,31 @@ std::optional<std::string> parse_marker(std::string_view v) {
     return std::string(ref.substr(1));
 }
 
+// paint-order: normal, or some of fill, stroke and markers in the order to
+// paint them, each at most once; the ones left out follow in their normal
+// order. The result gives each its position: fill, stroke, markers.
+std::optional<std::array<int, 3>> parse_paint_order(std::string_view v) {
+    v = trim(v);
+    if (v == "normal") return std::array<int, 3>{0, 1, 2};
+    std::vector<int> order;
+    for (std::size_t i = 0; i < v.size();) {
+        while (i < v.size() && std::isspace(static_cast<unsigned char>(v[i]))) ++i;
+        const std::size_t start = i;
+        while (i < v.size() && !std::isspace(static_cast<unsigned char>(v[i]))) ++i;
+        const std::string_view w = v.substr(start, i - start);
+        if (w.empty()) break;
+        const int k = w == "fill" ? 0 : w == "stroke" ? 1 : w == "markers" ? 2 : -1;
+        if (k < 0 || std::find(order.begin(), order.end(), k) != order.end()) return std::nullopt;
+        order.push_back(k);
+    }
+    if (order.empty()) return std::nullopt;
+    for (int k = 0; k < 3; ++k)
+        if (std::find(order.begin(), order.end(), k) == order.end()) order.push_back(k);
+    std::array<int, 3> position{};
+    for (int p = 0; p < 3; ++p) position[std::size_t(order[std::size_t(p)])] = p;
+    return position;
+}
+
 std::optional<float> parse_opacity(std::string_view v) {
     std::string_view rest;
     auto n = parse_number(v, &rest);
@@ -317,6 +342,16 @@ std::string apply_property(std::string_view name, std::string_view value, const 
                                            {"round", LineCap::Round},
                                            {"square", LineCap::Square}}),
                    "butt, round or square");
+    if (name == "paint-order")
+        return set(s.paint_order, parent.paint_order, parse_paint_order(value),
+                   "normal or an order of fill, stroke and markers");
+    if (name == "shape-rendering")
+        return set(s.antialias, parent.antialias,
+                   lookup<bool>(value, {{"auto", true},
+                                        {"geometricPrecision", true},
+                                        {"crispEdges", false},
+                                        {"optimizeSpeed", false}}),
+                   "auto, optimizeSpeed, crispEdges or geometricPrecision");
     if (name == "transform-origin")
         return set(props.transform_origin, Vec2{}, parse_transform_origin(value, ctx),
                    "a transform origin");

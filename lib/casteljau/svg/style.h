@@ -24,6 +24,7 @@
 #include "casteljau/raster/sweep.h"
 #include "casteljau/scene/scene.h"
 
+#include <array>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -64,6 +65,11 @@ struct StyleState {
     /// marker-start, marker-mid, marker-end: the id of a <marker>, or "" for
     /// none (the `marker` shorthand sets all three).
     std::string marker_start, marker_mid, marker_end;
+    /// paint-order (SVG 2, 13.5): the order of fill, stroke and markers,
+    /// as the positions of each in it (0 first); normal is 0, 1, 2.
+    std::array<int, 3> paint_order{0, 1, 2};
+    /// shape-rendering: false for crispEdges and optimizeSpeed (no antialiasing).
+    bool antialias = true;
     bool visible = true;
 };
 
