@@ -219,6 +219,24 @@ TEST(Painting, PaintOrderAndShapeRendering) {
     EXPECT_NE(r.warnings[0].text().find("property paint-order"), std::string::npos);
 }
 
+// librsvg 2.54 ignores vector-effect, so this is tested against the spec.
+TEST(Painting, NonScalingStrokeIsDrawnInHostSpace) {
+    const SvgResult r = read(R"svg(<linearGradient id="g"><stop stop-color="red"/></linearGradient>
+        <g transform="scale(4 2)"><rect x="3" y="5" width="20" height="40" fill="url(#g)"
+        stroke="black" stroke-width="2" vector-effect="non-scaling-stroke"/></g>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    const Shape& s = *shapes(*r.scene).at(0);
+    EXPECT_EQ((s.transform * Point{7, 9}), Point(7, 9));
+    EXPECT_EQ((s.transform * Point{0, 0}), Point(0, 0));
+    expect_box(s, {12, 10, 92, 90}, "the path mapped into host space");
+    EXPECT_EQ(s.stroke->geometry.width, 2); // 2 px, not 8 by 4
+    // The gradient's objectBoundingBox map is kept: the unit square lands on
+    // the same device box.
+    ASSERT_TRUE(s.fill->gradient);
+    EXPECT_FALSE(s.fill->gradient->object_bounding_box);
+    EXPECT_EQ((s.fill->gradient->transform * Point{1, 1}), Point(92, 90));
+}
+
 TEST(TransformOrigin, TheTransformIsAppliedAboutIt) {
     // rotate(90) about (15, 15): the 10 x 10 square at 10, 10 stays put.
     const SvgResult r = read(R"svg(

@@ -313,7 +313,34 @@ std::optional<Shape> Reader::shape(const pugi::xml_node& n, std::string_view nam
         s.fill = Fill{p->color, p->gradient, style.fill_opacity, style.fill_rule};
     if (const auto p = paint(n, style.stroke, style); p && style.stroke_geometry.width > 0)
         s.stroke = Stroke{p->color, p->gradient, style.stroke_opacity, style.stroke_geometry};
+    if (props.non_scaling_stroke && s.stroke) to_host_space(s);
     return s;
+}
+
+// vector-effect: non-scaling-stroke (SVG 2, 13.9): the stroke is drawn in
+// the host coordinate space, the scene's device space, so its width and
+// dashes are in scene pixels whatever the transforms. The path is mapped
+// into that space and the shape's transform becomes the identity; each
+// gradient is remapped to stay where it was (to userSpaceOnUse, composing
+// the old map and, for objectBoundingBox units, the user-space box).
+void Reader::to_host_space(Shape& s) {
+    const Affine m = s.transform;
+    const Rect box = s.path.bounds();
+    const auto remap = [&](std::shared_ptr<const Gradient>& g) {
+        if (!g) return;
+        auto moved = std::make_shared<Gradient>(*g);
+        Affine to_user = Affine::identity();
+        if (g->object_bounding_box)
+            to_user =
+                Affine::translate(box.min().to_vec()) * Affine::scale(box.width(), box.height());
+        moved->transform = m * to_user * g->transform;
+        moved->object_bounding_box = false;
+        g = std::move(moved);
+    };
+    if (s.fill) remap(s.fill->gradient);
+    remap(s.stroke->gradient);
+    s.path.transform(m);
+    s.transform = Affine::identity();
 }
 
 std::optional<Reader::ResolvedPaint> Reader::paint(const pugi::xml_node& n, const PaintSpec& spec,

@@ -342,6 +342,14 @@ std::string apply_property(std::string_view name, std::string_view value, const 
                                            {"round", LineCap::Round},
                                            {"square", LineCap::Square}}),
                    "butt, round or square");
+    if (name == "vector-effect")
+        return set(props.non_scaling_stroke, false,
+                   lookup<bool>(value, {{"none", false},
+                                        {"non-scaling-stroke", true},
+                                        {"non-scaling-size", false},
+                                        {"non-rotation", false},
+                                        {"fixed-position", false}}),
+                   "none or non-scaling-stroke");
     if (name == "paint-order")
         return set(s.paint_order, parent.paint_order, parse_paint_order(value),
                    "normal or an order of fill, stroke and markers");

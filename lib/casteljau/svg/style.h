@@ -81,6 +81,9 @@ struct ElementProps {
     /// applied about, in user units; percentages and keywords of the
     /// viewport (SVG's default transform-box, view-box). Initially 0 0.
     Vec2 transform_origin;
+    /// vector-effect: non-scaling-stroke (the other SVG 2 values are valid
+    /// and, as in browsers, do nothing).
+    bool non_scaling_stroke = false;
 };
 
 /// Applies one property. Returns "" when applied or unknown, otherwise what is

@@ -136,6 +136,7 @@ class Reader {
                          const StyleState& style, const Affine& m, Group& out, int depth);
     std::size_t expanded_size(const pugi::xml_node& n, int depth);
     StyleState style_of(const pugi::xml_node& n, ElementProps& props);
+    void to_host_space(Shape& s);
     void markers(const pugi::xml_node& n, const Shape& s, const StyleState& style, Group& out,
                  int depth);
     void marker(const pugi::xml_node& mk, const MarkerVertex& v, const Shape& s,
