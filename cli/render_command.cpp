@@ -9,6 +9,7 @@
 #include "casteljau/io/atomic_file.h"
 #include "casteljau/io/canvas_write.h"
 #include "casteljau/render/bands.h"
+#include "casteljau/render/output_size.h"
 #include "casteljau/svg/color.h"
 #include "casteljau/svg/reader.h"
 #include "commands.h"
@@ -33,6 +34,10 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 constexpr int kMaxRepeat = 100000;
+
+// The output limits are the library's (render/output_size.h); common.h's
+// copies bound the options' ranges and must agree.
+static_assert(kMaxSide == kMaxOutputSide && kMaxPixels == kMaxOutputPixels);
 
 struct RenderArgs {
     std::vector<std::string> inputs;
@@ -75,20 +80,14 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
     if (!loaded) return out;
     const Scene& scene = *loaded;
     const double parse_ms = ms(Clock::now() - t0);
-    const double s = a.scale > 0    ? a.scale
-                     : a.width > 0  ? a.width / scene.width
-                     : a.height > 0 ? a.height / scene.height
-                                    : 1.0;
-    const double w = std::ceil(scene.width * s - 1e-9), h = std::ceil(scene.height * s - 1e-9);
-    if (!(w >= 1 && h >= 1 && w <= kMaxSide && h <= kMaxSide && w * h <= kMaxPixels)) {
-        std::fprintf(
-            stderr,
-            "error: %s: output size %.0f x %.0f px is outside the limits (1 to %d px a side, "
-            "at most %.0f pixels)\n",
-            input.c_str(), w, h, kMaxSide, kMaxPixels);
+    const OutputSize size = output_size(scene.width, scene.height, {a.width, a.height, a.scale});
+    if (!size.error.empty()) {
+        std::fprintf(stderr, "error: %s: %s\n", input.c_str(), size.error.c_str());
         out.status = kExitBadInput;
         return out;
     }
+    const double s = size.scale;
+    const int w = size.width, h = size.height;
     const RenderOptions options{.flatten = a.flatten,
                                 .antialias = a.antialias,
                                 .linear_light_gradients = a.linear_light,
@@ -97,7 +96,7 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
     RenderStats stats;
     for (int i = 0; i < a.repeat; ++i) {
         const auto f0 = Clock::now();
-        canvas.reset(int(w), int(h));
+        canvas.reset(w, h);
         stats = renderer.render(scene, Affine::scale(s), canvas, options, background, threads(a));
         frame_ms.push_back(ms(Clock::now() - f0));
         flatten_ms.push_back(stats.flatten_ms);
@@ -115,26 +114,26 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
     if (a.stats.empty()) return out;
     // Segment counts and the exact flattening error, from a separate, untimed
     // single-band pass (bands repeat the flattening of shapes they share).
-    Canvas scratch{int(w), int(h)};
+    Canvas scratch{w, h};
     Renderer measure;
     const RenderStats m = measure.render(
         scene, Affine::scale(s), scratch,
         {.flatten = options.flatten, .antialias = a.antialias, .measure_error = true});
     stats.flatten = m.flatten;
-    out.stats_json =
-        "{\"input\": " + json_string(input) + ", \"output\": " + json_string(output) +
-        ", \"segments_in\": " + std::to_string(stats.flatten.curves_in) +
-        ", \"segments_out\": " + std::to_string(stats.flatten.segments_out) +
-        ", \"max_error_px\": " + json_number(m.flatten.max_error) +
-        ", \"parse_ms\": " + json_number(parse_ms) +
-        ", \"flatten_ms\": " + json_number(median(flatten_ms)) +
-        ", \"raster_ms\": " + json_number(median(raster_ms)) +
-        ", \"encode_ms\": " + json_number(encode_ms) +
-        ", \"frame_ms\": " + json_number(median(frame_ms)) +
-        ", \"total_ms\": " + json_number(total_ms) + ", \"width\": " + std::to_string(int(w)) +
-        ", \"height\": " + std::to_string(int(h)) + ", \"threads\": " + std::to_string(threads(a)) +
-        ", \"pixels\": " + (a.u8 ? "\"u8\"" : "\"float\"") +
-        ", \"repeat\": " + std::to_string(a.repeat) + "}";
+    out.stats_json = "{\"input\": " + json_string(input) + ", \"output\": " + json_string(output) +
+                     ", \"segments_in\": " + std::to_string(stats.flatten.curves_in) +
+                     ", \"segments_out\": " + std::to_string(stats.flatten.segments_out) +
+                     ", \"max_error_px\": " + json_number(m.flatten.max_error) +
+                     ", \"parse_ms\": " + json_number(parse_ms) +
+                     ", \"flatten_ms\": " + json_number(median(flatten_ms)) +
+                     ", \"raster_ms\": " + json_number(median(raster_ms)) +
+                     ", \"encode_ms\": " + json_number(encode_ms) +
+                     ", \"frame_ms\": " + json_number(median(frame_ms)) +
+                     ", \"total_ms\": " + json_number(total_ms) +
+                     ", \"width\": " + std::to_string(w) + ", \"height\": " + std::to_string(h) +
+                     ", \"threads\": " + std::to_string(threads(a)) +
+                     ", \"pixels\": " + (a.u8 ? "\"u8\"" : "\"float\"") +
+                     ", \"repeat\": " + std::to_string(a.repeat) + "}";
     return out;
 }
 

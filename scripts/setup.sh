@@ -13,6 +13,8 @@ packages=(
   librsvg2-bin python3 doxygen
   libcairo2-dev
   clang libclang-rt-14-dev
+  python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
+  python3-dask python3-distributed python3-pil
 )
 
 missing=()

@@ -9,12 +9,17 @@ jobs=$(nproc)
 
 bash scripts/setup.sh
 
-cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCASTELJAU_WERROR=ON
+# CASTELJAU_PYTHON=ON: the Python package is required here (configuring fails
+# without python3-dev and pybind11-dev), and its pytest suite (tests/python,
+# under Debian's python3) runs in ctest as python.pytest.
+cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCASTELJAU_WERROR=ON -DCASTELJAU_PYTHON=ON
 cmake --build build -j "$jobs"
 ctest --test-dir build -j "$jobs" --output-on-failure
 
 # Sanitizers: the same tests, minus the install test (its consumer project is
-# built without the sanitizer runtime the instrumented library needs). -g1:
+# built without the sanitizer runtime the instrumented library needs) and the
+# Python package (an instrumented module cannot load into python3; the
+# configuration leaves it out). -g1:
 # line tables only, which is all a sanitizer's stack trace reads (file:line),
 # at 10-30% less compile time per file than -g.
 cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCASTELJAU_WERROR=ON \

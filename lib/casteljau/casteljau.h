@@ -12,4 +12,6 @@
 #include "casteljau/hit/stroke_hit.h"
 #include "casteljau/hit/winding.h"
 #include "casteljau/io/canvas_write.h"
+#include "casteljau/paint/straight_rgba.h"
 #include "casteljau/render/drawing.h"
+#include "casteljau/render/output_size.h"

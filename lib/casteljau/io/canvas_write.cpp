@@ -1,10 +1,12 @@
 #include "casteljau/io/canvas_write.h"
 
 #include "casteljau/io/image_write.h"
+#include "casteljau/paint/straight_rgba.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <vector>
 
@@ -25,25 +27,28 @@ std::string write_canvas_atomic(const std::string& path, const BasicCanvas<Pixel
                    [](unsigned char c) { return std::tolower(c); });
     const bool exr = ext == ".exr", jpeg = ext == ".jpg" || ext == ".jpeg";
     const int w = canvas.width(), h = canvas.height();
-    std::vector<float> out(std::size_t(w) * std::size_t(h) * 4);
+    const std::size_t values = std::size_t(w) * std::size_t(h) * 4;
+    if (!stores_float(path)) { // PNG, JPEG, ...: straight 8-bit values, rounded by straight_rgba8
+        std::vector<std::uint8_t> out(values);
+        straight_rgba8(canvas, out, jpeg);
+        return write_image_atomic(path, {.width = w, .height = h, .rgba8 = out});
+    }
+    std::vector<float> out(values);
+    if (!exr) { // TIFF: straight float
+        straight_rgba(canvas, out);
+        return write_image_atomic(path, {w, h, out, Alpha::straight});
+    }
     for (int y = 0; y < h; ++y) {
         const Pixel* src = canvas.row(y);
         float* dst = &out[std::size_t(y) * std::size_t(w) * 4];
         for (int x = 0; x < w; ++x, dst += 4) {
-            Premul p = to_premul(src[x]);
-            if (jpeg) { // over white
-                const float k = 1.0f - p.a;
-                p = {p.r + k, p.g + k, p.b + k, 1.0f};
-            }
-            const float inv = p.a > 0 ? 1.0f / p.a : 0.0f;
-            float c[3] = {std::min(p.r * inv, 1.0f), std::min(p.g * inv, 1.0f),
-                          std::min(p.b * inv, 1.0f)};
-            if (exr)
-                for (float& v : c) v = srgb_to_linear(v) * p.a;
-            dst[0] = c[0], dst[1] = c[1], dst[2] = c[2], dst[3] = std::min(p.a, 1.0f);
+            const Premul p = to_premul(src[x]);
+            const Rgba c = straight_of(p);
+            dst[0] = srgb_to_linear(c.r) * p.a, dst[1] = srgb_to_linear(c.g) * p.a;
+            dst[2] = srgb_to_linear(c.b) * p.a, dst[3] = c.a;
         }
     }
-    return write_image_atomic(path, {w, h, out, exr ? Alpha::premultiplied : Alpha::straight});
+    return write_image_atomic(path, {w, h, out, Alpha::premultiplied});
 }
 
 template std::string write_canvas_atomic(const std::string&, const Canvas&);

@@ -1,9 +1,11 @@
 // Writing a Canvas as an image file, in the encoding its format expects:
 // * 8-bit formats (PNG, JPEG, ...) and TIFF: straight (un-premultiplied)
-//   sRGB-encoded values, the SVG color space; TIFF is written as float and
-//   tagged unassociated alpha. Straight rather than the canvas's
-//   premultiplied values: PNG can only store straight ones, and dividing
-//   here, in float, keeps the precision that dividing 8-bit values would lose.
+//   sRGB-encoded values, the SVG color space, converted by
+//   paint/straight_rgba.h (which also rounds the 8-bit ones, so that a PNG
+//   holds exactly the bytes straight_rgba8 gives any other caller); TIFF is
+//   written as float and tagged unassociated alpha. Straight rather than the
+//   canvas's premultiplied values: PNG can only store straight ones, and
+//   dividing in float keeps the precision that dividing 8-bit values would lose.
 // * EXR: scene-linear, premultiplied, float, as OpenEXR files are by
 //   convention (the sRGB transfer function is undone channel by channel).
 // * JPEG has no alpha: the image is flattened onto white first.

@@ -22,6 +22,12 @@ bool wants_float(const std::string& ext) {
            ext == ".TIFF";
 }
 
+std::vector<float> to_float(std::span<const std::uint8_t> rgba8) {
+    std::vector<float> out(rgba8.size());
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = float(rgba8[i]) / 255.0f;
+    return out;
+}
+
 std::vector<float> premultiplied(std::span<const float> rgba) {
     std::vector<float> out(rgba.begin(), rgba.end());
     for (std::size_t i = 0; i + 3 < out.size(); i += 4)
@@ -30,6 +36,10 @@ std::vector<float> premultiplied(std::span<const float> rgba) {
 }
 
 } // namespace
+
+bool stores_float(const std::string& path) {
+    return wants_float(fs::path(path).extension().string());
+}
 
 // Encodes with OIIO, either into memory (an I/O proxy) that
 // write_file_atomic then writes with every step checked, or straight into the
@@ -52,20 +62,30 @@ std::string write_image_atomic(const std::string& path, const ImageView& image) 
         return path + ": the '" + ext + "' writer cannot encode into memory";
     const OIIO::TypeDesc type = wants_float(ext) ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
     const bool jpeg = ext == ".jpg" || ext == ".jpeg" || ext == ".JPG" || ext == ".JPEG";
-    // JPEG has no alpha channel: its three channels are read with a 4-float stride.
+    // JPEG has no alpha channel: its three channels are read with a 4-value stride.
     OIIO::ImageSpec spec(image.width, image.height, jpeg ? 3 : 4, type);
     const bool exr = ext == ".exr" || ext == ".EXR";
     spec.attribute("oiio:ColorSpace", exr ? "Linear" : "sRGB");
     // Unlabelled, OIIO takes the values as premultiplied: PNG would divide them by alpha.
     spec.attribute("oiio:UnassociatedAlpha", image.alpha == Alpha::straight ? 1 : 0);
+    // 8-bit values go to an 8-bit format untouched; a float format gets floats.
+    const bool bytes_in = image.rgba.empty() && !image.rgba8.empty();
+    std::vector<float> widened;
+    if (bytes_in && type == OIIO::TypeDesc::FLOAT) widened = to_float(image.rgba8);
+    const std::span<const float> rgba = widened.empty() ? image.rgba : widened;
     // OIIO's EXR writer ignores that label (OpenEXR is premultiplied by definition).
     std::vector<float> converted;
-    if (exr && image.alpha == Alpha::straight) converted = premultiplied(image.rgba);
-    const float* pixels = converted.empty() ? image.rgba.data() : converted.data();
+    if (exr && image.alpha == Alpha::straight) converted = premultiplied(rgba);
+    const bool as_bytes = bytes_in && widened.empty();
+    const void* pixels = as_bytes            ? static_cast<const void*>(image.rgba8.data())
+                         : converted.empty() ? static_cast<const void*>(rgba.data())
+                                             : static_cast<const void*>(converted.data());
+    const OIIO::TypeDesc given = as_bytes ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
+    const std::size_t pixel_bytes = as_bytes ? 4 : 4 * sizeof(float);
     std::string error;
     if (!out->open(target.string(), spec)) {
         error = path + ": cannot write: " + out->geterror();
-    } else if (!out->write_image(OIIO::TypeDesc::FLOAT, pixels, 4 * sizeof(float))) {
+    } else if (!out->write_image(given, pixels, OIIO::stride_t(pixel_bytes))) {
         error = path + ": write failed: " + out->geterror();
     }
     if (!out->close() && error.empty()) error = path + ": write failed: " + out->geterror();

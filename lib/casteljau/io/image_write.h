@@ -1,12 +1,13 @@
 // Writing images through OpenImageIO, atomically.
 //
 // The format follows the file extension (png, tif/tiff, exr, jpg/jpeg; anything
-// else OpenImageIO knows). 8-bit formats get the values quantised with
-// rounding; EXR and TIFF are written as 32-bit float; JPEG gets RGB only. The image goes to a
-// temporary file in the destination's folder (same extension, so OpenImageIO
-// picks the same writer), which is renamed over the destination only once
-// complete: a failed or interrupted write never leaves a damaged or partial
-// file, and an existing file stays untouched until the new one is whole.
+// else OpenImageIO knows). 8-bit formats get float values quantised with
+// rounding (or 8-bit values as they are); EXR and TIFF are written as 32-bit
+// float; JPEG gets RGB only. The image goes to a temporary file in the
+// destination's folder (same extension, so OpenImageIO picks the same
+// writer), which is renamed over the destination only once complete: a
+// failed or interrupted write never leaves a damaged or partial file, and an
+// existing file stays untouched until the new one is whole.
 //
 // The caller states whether the pixels are straight or premultiplied, and the
 // file's alpha is made to agree with that, for every format. OpenImageIO takes
@@ -20,6 +21,7 @@
 // has no alpha and drops it: flatten the image first.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <string>
 
@@ -36,11 +38,19 @@ struct ImageView {
     int width = 0, height = 0;
     /// width * height RGBA pixels, row-major from the top, values in [0, 1]
     /// already in the output's encoding (sRGB for 8-bit files).
-    std::span<const float> rgba;
+    std::span<const float> rgba{};
     /// What the color values in `rgba` are; the file is labelled (or, for
     /// EXR, converted) to match.
     Alpha alpha = Alpha::straight;
+    /// Or 8-bit values (255 for 1), used when `rgba` is empty: an 8-bit
+    /// format stores them as they are (no rounding here); a float format
+    /// gets them divided by 255.
+    std::span<const std::uint8_t> rgba8{};
 };
+
+/// Whether write_image_atomic stores 32-bit float for this path's extension
+/// (EXR, TIFF); every other format stores 8 bits a channel.
+bool stores_float(const std::string& path);
 
 /// Returns an empty string on success, otherwise what went wrong (with the path).
 std::string write_image_atomic(const std::string& path, const ImageView& image);

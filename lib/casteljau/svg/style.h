@@ -62,7 +62,7 @@ struct StyleState {
     StrokeGeometry stroke_geometry;
     Rgba color{0, 0, 0, 1};
     double font_size = 16; ///< computed, px (CSS's initial "medium")
-    /// marker-start, marker-mid, marker-end: the id of a <marker>, or "" for
+    /// marker-start, marker-mid, marker-end: the id of a marker element, or "" for
     /// none (the `marker` shorthand sets all three).
     std::string marker_start, marker_mid, marker_end;
     /// paint-order (SVG 2, 13.5): the order of fill, stroke and markers,
