@@ -200,6 +200,10 @@ def generate_valid(folder):
     svg("round_joins_1e6_px_wide.svg", 64, 64,
         '<path d="M30 30 %s" fill="none" stroke="black" stroke-width="1e6" '
         'stroke-linejoin="round"/>\n' % zigzag)
+    # A stroke 1e300 wide on coordinates of 1e308: squares of its lengths
+    # overflow (12.7 GB before the stroker scaled such strokes down).
+    svg("stroke_1e300_wide.svg", 10, 10,
+        '<path d="M0 0 L1e308 1e308 L-1e308 1 Z" fill="none" stroke="black" stroke-width="1e300"/>\n')
     rects = "".join('<rect x="%.2f" y="%.2f" width="0.3" height="0.3" fill="#%06x"/>\n'
                     % ((i * 7.31) % 1000, (i * 3.17) % 1000, (i * 2654435761) & 0xffffff)
                     for i in range(100000))
@@ -224,6 +228,7 @@ VALID = {
     "circle_1e7_px_off_canvas.svg": ([], 2.0),
     "subpixel_shapes_100k.svg": ([], 5.0),
     "round_joins_1e6_px_wide.svg": ([], 2.0),
+    "stroke_1e300_wide.svg": ([], 2.0),
     "patch_collapsed_edge.bpt": (["--width", "320", "--height", "240"], 2.0),
 }
 

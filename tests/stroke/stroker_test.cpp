@@ -453,6 +453,30 @@ TEST(Stroker, AStroke1e22WideHasBoundedRoundCapsAndJoins) {
 // input, as the outline's point limit (2^23, stroker.cpp) was only checked
 // between subpaths. A subpath that outgrows it is dropped, and so is what
 // follows it (a small square); 1000 such joins are within it, and drawn.
+// A stroke 1e199 wide along a line 1e200 long: lengths whose squares
+// overflow. Built scaled down and back, it is the rectangle it should be
+// (before, every normal was NaN and the outline took gigabytes).
+TEST(Stroker, AStrokeBeyondTheSquaresOfDoublesIsBuiltScaled) {
+    Path p;
+    p.move_to({0, 0});
+    p.line_to({1e200, 0});
+    StrokeGeometry g;
+    g.width = 1e199;
+    Stroker stroker;
+    const auto polys = stroker.outline(p, g, 0.25, Rect{-1e201, -1e201, 1e201, 1e201});
+    ASSERT_EQ(polys.size(), 1u);
+    Rect b = Rect::empty();
+    for (const Point& q : polys[0]) {
+        ASSERT_TRUE(std::isfinite(q.x) && std::isfinite(q.y)) << q.x << " " << q.y;
+        b = b.united(Rect{q.x, q.y, q.x, q.y});
+    }
+    EXPECT_LE(polys[0].size(), 8u);
+    EXPECT_NEAR(b.x0, 0, 1e186);
+    EXPECT_NEAR(b.x1, 1e200, 1e186);
+    EXPECT_NEAR(b.y0, -5e198, 1e186);
+    EXPECT_NEAR(b.y1, 5e198, 1e186);
+}
+
 TEST(Stroker, ASubpathBeyondThePointLimitIsNotDrawn) {
     const auto zigzag_then_square = [](int joins) {
         std::string d = "M30 30";

@@ -625,6 +625,14 @@ Stroker::~Stroker() = default;
 Stroker::Stroker(Stroker&&) noexcept = default;
 Stroker& Stroker::operator=(Stroker&&) noexcept = default;
 
+// The largest coordinate (or length) the outline is built at: squares of
+// lengths, which the sampler and the flattener take, stay far below the
+// doubles' 1.8e308. A stroke whose kept box or reach is larger (a stroke
+// 1e300 wide: its lengths' squares overflowed to infinity, every normal was
+// NaN and one line took 65,537 samples, another an unbounded flattening,
+// 12.7 GB) is built scaled down by a power of two, exactly, and scaled back.
+constexpr double kMaxMagnitude = 1e100;
+
 std::span<const Polygon> Stroker::outline(const Path& path, const StrokeGeometry& style,
                                           double tolerance, const Rect& visible) {
     Buffers& b = *b_;
@@ -637,6 +645,10 @@ std::span<const Polygon> Stroker::outline(const Path& path, const StrokeGeometry
     // longer spike from a join out of reach of the image is not drawn.
     const double reach = h * std::clamp(style.miter_limit, std::sqrt(2.0), 1e6) + tolerance;
     const Rect keep = visible.inflated(reach);
+    const double size = std::max(
+        {std::fabs(keep.x0), std::fabs(keep.x1), std::fabs(keep.y0), std::fabs(keep.y1), reach});
+    if (size > kMaxMagnitude && std::isfinite(size))
+        return outline_scaled(path, style, tolerance, visible, size);
     b.pieces.clear();
     if (style.dashes.empty())
         visible_part(path, keep, b.pieces);
@@ -653,6 +665,26 @@ std::span<const Polygon> Stroker::outline(const Path& path, const StrokeGeometry
         for (std::size_t i = before; i < b.count; ++i) points += b.polygons[i].size();
     }
     return {b.polygons.data(), b.count};
+}
+
+// outline() at 2^-k of the size, so that the largest magnitude is at most
+// kMaxMagnitude, then scaled back: powers of two scale doubles exactly (the
+// tolerance too stays far above the smallest normal double).
+std::span<const Polygon> Stroker::outline_scaled(const Path& path, const StrokeGeometry& style,
+                                                 double tolerance, const Rect& visible,
+                                                 double size) {
+    const double k = std::exp2(-std::ceil(std::log2(size / kMaxMagnitude)));
+    Path scaled = path;
+    scaled.transform(Affine::scale(k));
+    StrokeGeometry st = style;
+    st.width *= k;
+    st.dash_offset *= k;
+    for (double& d : st.dashes) d *= k;
+    const Rect v{visible.x0 * k, visible.y0 * k, visible.x1 * k, visible.y1 * k};
+    const std::span<const Polygon> out = outline(scaled, st, tolerance * k, v);
+    for (std::size_t i = 0; i < b_->count; ++i)
+        for (Point& p : b_->polygons[i]) p = Point{p.x / k, p.y / k};
+    return out;
 }
 
 void stroke_outline(const Path& path, const StrokeGeometry& style, double tolerance,

@@ -104,6 +104,8 @@ class Stroker {
     struct Buffers;
 
   private:
+    std::span<const Polygon> outline_scaled(const Path& path, const StrokeGeometry& style,
+                                            double tolerance, const Rect& visible, double size);
     std::unique_ptr<Buffers> b_;
 };
 
