@@ -82,7 +82,20 @@ inline constexpr Specificity kSpecId = Specificity(1) << 42, kSpecClass = Specif
 enum class Combinator : std::uint8_t { Descendant, Child, Next, Subsequent };
 enum class AttrOp : std::uint8_t { Exists, Equals, Includes, DashMatch, Prefix, Suffix, Substring };
 
-struct Complex;
+// Declared in this order so that Complex is complete where Simple's member
+// initializers name std::vector<Complex> (clang instantiates it there).
+struct Simple;
+
+struct Compound {
+    std::string type; // empty: any element
+    std::vector<Simple> simples;
+    Combinator left = Combinator::Descendant; // to the compound on the left, if any
+};
+
+struct Complex {
+    std::vector<Compound> compounds; // left to right
+    Specificity specificity = 0;
+};
 
 struct Simple {
     enum class Kind : std::uint8_t {
@@ -109,17 +122,6 @@ struct Simple {
     std::string name = {};  // Id, Class: the name; Attr: the attribute
     std::string value = {}; // Attr
     std::vector<Complex> args = {};
-};
-
-struct Compound {
-    std::string type; // empty: any element
-    std::vector<Simple> simples;
-    Combinator left = Combinator::Descendant; // to the compound on the left, if any
-};
-
-struct Complex {
-    std::vector<Compound> compounds; // left to right
-    Specificity specificity = 0;
 };
 
 // A parsed selector list: the selectors, or why there are none. Selectors
