@@ -63,6 +63,31 @@ double distance_to_curve(const CubicBez& c, Point q) {
     return std::min(bd, distance(c.eval(0.5 * (lo + hi)), q));
 }
 
+// Strokes cubic `c` w wide at tolerance `tol` and checks that every outline
+// vertex, and the midpoint of every outline edge, away from the caps lies
+// w/2 +- tol from the curve. Returns how many points it checked.
+int check_offsets(const CubicBez& c, double w, double tol, int i) {
+    Path p;
+    p.move_to(c.start());
+    p.cubic_to(c.p[1], c.p[2], c.p[3]);
+    std::vector<Polygon> out;
+    stroke_outline(p, style(w), tol, out);
+    EXPECT_EQ(out.size(), 1u) << "curve " << i;
+    if (out.size() != 1) return 0;
+    const Polygon& poly = out[0];
+    int checked = 0;
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+        for (const Point q : {poly[k], midpoint(poly[k], poly[(k + 1) % poly.size()])}) {
+            if (distance(q, c.start()) < w || distance(q, c.end()) < w) continue; // near the caps
+            EXPECT_NEAR(distance_to_curve(c, q), w / 2, tol + 1e-9)
+                << "curve " << i << " width " << w << " tol " << tol << " at (" << q.x << ", "
+                << q.y << ")";
+            ++checked;
+        }
+    }
+    return checked;
+}
+
 TEST(Stroker, OutlineLiesAtHalfWidthFromRandomCurves) {
     // Away from the caps, every outline vertex and every outline edge midpoint
     // is at width/2 +- tolerance from the curve. Curves whose radius of
@@ -87,23 +112,7 @@ TEST(Stroker, OutlineLiesAtHalfWidthFromRandomCurves) {
             for (int b = a + 20; b <= 200 && !approaches; ++b)
                 approaches = distance(c.eval(a / 200.0), c.eval(b / 200.0)) < 2 * w;
         if (min_radius < w || approaches) continue;
-        Path p;
-        p.move_to(c.start());
-        p.cubic_to(c.p[1], c.p[2], c.p[3]);
-        std::vector<Polygon> out;
-        stroke_outline(p, style(w), tol, out);
-        ASSERT_EQ(out.size(), 1u);
-        const Polygon& poly = out[0];
-        for (std::size_t k = 0; k < poly.size(); ++k) {
-            for (const Point q : {poly[k], midpoint(poly[k], poly[(k + 1) % poly.size()])}) {
-                if (distance(q, c.start()) < w || distance(q, c.end()) < w)
-                    continue; // near the caps
-                const double d = distance_to_curve(c, q);
-                EXPECT_NEAR(d, w / 2, tol + 1e-9)
-                    << "curve " << i << " width " << w << " tol " << tol;
-                ++checked;
-            }
-        }
+        checked += check_offsets(c, w, tol, i);
     }
     EXPECT_GT(checked, 5000);
 }
@@ -242,30 +251,14 @@ TEST(Stroker, NormalTurnIsBoundedBetweenSamples) {
     testing::Rng rng(2122);
     int checked = 0;
     for (int i = 0; i < 100; ++i) {
-        const double tol = rng.log_uniform(0.1, 0.5), w = rng.log_uniform(1, 30), h = w / 2;
+        const double tol = rng.log_uniform(0.1, 0.5), w = rng.log_uniform(1, 30);
         const Point a = rng.point(300), b = rng.point(300);
         if (distance(a, b) < 4 * w) continue;
         const double chord = std::atan2((b - a).y, (b - a).x);
         const double angle = chord + rng.uniform(kPi / 6, kPi / 2) * (rng.integer(0, 1) ? 1 : -1);
         const Vec2 u{std::cos(angle), std::sin(angle)};
         const CubicBez c{{a, a + u * rng.uniform(0.01, 0.05), b - u * rng.uniform(0.01, 0.05), b}};
-        Path p;
-        p.move_to(c.start());
-        p.cubic_to(c.p[1], c.p[2], c.p[3]);
-        std::vector<Polygon> out;
-        stroke_outline(p, style(w), tol, out);
-        ASSERT_EQ(out.size(), 1u);
-        const Polygon& poly = out[0];
-        for (std::size_t k = 0; k < poly.size(); ++k) {
-            for (const Point q : {poly[k], midpoint(poly[k], poly[(k + 1) % poly.size()])}) {
-                if (distance(q, c.start()) < w || distance(q, c.end()) < w)
-                    continue; // near the caps
-                EXPECT_NEAR(distance_to_curve(c, q), h, tol + 1e-9)
-                    << "curve " << i << " width " << w << " tol " << tol << " at (" << q.x << ", "
-                    << q.y << ")";
-                ++checked;
-            }
-        }
+        checked += check_offsets(c, w, tol, i);
     }
     EXPECT_GT(checked, 100);
 }

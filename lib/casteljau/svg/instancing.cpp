@@ -79,13 +79,8 @@ void Reader::nested_viewport(const pugi::xml_node& n, const pugi::xml_node& size
         inner = inner * Affine::translate({length(n, "x", vw_, ctx).value_or(0),
                                            length(n, "y", vh_, ctx).value_or(0)});
     }
-    std::optional<ViewBox> box;
-    if (const pugi::xml_attribute a = n.attribute("viewBox")) {
-        ViewBoxResult vb = parse_view_box(a.value());
-        if (!vb.error.empty()) problem(n, vb.error);
-        box = vb.box;
-        if (box && (box->w == 0 || box->h == 0)) return;
-    }
+    const std::optional<ViewBox> box = view_box(n);
+    if (box && (box->w == 0 || box->h == 0)) return;
     // refX, refY (SVG 2, 5.5): the symbol's point placed at the use's x, y.
     // Absent, the viewport's corner is (the point is not 0 0: that would
     // undo the alignment, which librsvg and browsers keep).
@@ -93,18 +88,7 @@ void Reader::nested_viewport(const pugi::xml_node& n, const pugi::xml_node& size
     if (std::string_view(n.name()) == "symbol" && (n.attribute("refX") || n.attribute("refY")))
         ref =
             Point{length(n, "refX", vw_, ctx).value_or(0), length(n, "refY", vh_, ctx).value_or(0)};
-    Affine view = Affine::identity();
-    if (box) {
-        AspectRatio ar;
-        if (const pugi::xml_attribute a = n.attribute("preserveAspectRatio")) {
-            if (const auto parsed = parse_aspect_ratio(a.value()))
-                ar = *parsed;
-            else
-                problem(n, std::string("preserveAspectRatio: '") + a.value() +
-                               "' is invalid; xMidYMid meet is used");
-        }
-        view = view_box_transform(*box, ar, 0, 0, *w, *h);
-    }
+    Affine view = box ? view_map(n, *box, *w, *h) : Affine::identity();
     if (ref) view = Affine::translate(Point{0, 0} - view * *ref) * view;
     inner = inner * view;
     const double saved_w = vw_, saved_h = vh_;
@@ -271,23 +255,9 @@ void Reader::marker(const pugi::xml_node& mk, const MarkerVertex& v, const Shape
         else
             problem(mk, "orient: '" + std::string(orient) + "' is invalid; 0 is used");
     }
-    Affine view = Affine::identity();
-    if (const pugi::xml_attribute a = mk.attribute("viewBox")) {
-        ViewBoxResult vb = parse_view_box(a.value());
-        if (!vb.error.empty()) problem(mk, vb.error);
-        if (vb.box && (vb.box->w == 0 || vb.box->h == 0)) return;
-        if (vb.box) {
-            AspectRatio ar;
-            if (const pugi::xml_attribute p = mk.attribute("preserveAspectRatio")) {
-                if (const auto parsed = parse_aspect_ratio(p.value()))
-                    ar = *parsed;
-                else
-                    problem(mk, std::string("preserveAspectRatio: '") + p.value() +
-                                    "' is invalid; xMidYMid meet is used");
-            }
-            view = view_box_transform(*vb.box, ar, 0, 0, *w, *h);
-        }
-    }
+    const std::optional<ViewBox> box = view_box(mk);
+    if (box && (box->w == 0 || box->h == 0)) return;
+    const Affine view = box ? view_map(mk, *box, *w, *h) : Affine::identity();
     const Point ref{length(mk, "refX", vw_, ctx).value_or(0),
                     length(mk, "refY", vh_, ctx).value_or(0)};
     const Affine m = s.transform * Affine::translate(v.at - Point{0, 0}) *

@@ -74,12 +74,7 @@ Scene Reader::read() {
 // Nothing to draw (nullopt) when the viewBox is zero-sized.
 std::optional<Affine> Reader::viewport(const pugi::xml_node& root, Scene& scene,
                                        const LengthContext& ctx) {
-    std::optional<ViewBox> box;
-    if (const pugi::xml_attribute a = root.attribute("viewBox")) {
-        ViewBoxResult vb = parse_view_box(a.value());
-        if (!vb.error.empty()) problem(root, vb.error);
-        box = vb.box;
-    }
+    const std::optional<ViewBox> box = view_box(root);
     const auto side = [&](const char* attr, double from_box) {
         const double full = box ? from_box : 100;
         std::string v = root.attribute(attr).value();
@@ -106,15 +101,32 @@ std::optional<Affine> Reader::viewport(const pugi::xml_node& root, Scene& scene,
         warn(root, "viewBox: a zero width or height disables rendering");
         return std::nullopt;
     }
+    return view_map(root, *box, scene.width, scene.height);
+}
+
+// The element's viewBox: nullopt when absent, or in error (a problem; the
+// element is then drawn as if it had none). A zero-sized box is returned:
+// the caller disables rendering.
+std::optional<ViewBox> Reader::view_box(const pugi::xml_node& n) {
+    const pugi::xml_attribute a = n.attribute("viewBox");
+    if (!a) return std::nullopt;
+    ViewBoxResult vb = parse_view_box(a.value());
+    if (!vb.error.empty()) problem(n, vb.error);
+    return vb.box;
+}
+
+// `box` onto a w x h viewport at the origin, aligned by the element's
+// preserveAspectRatio (invalid: a problem, and xMidYMid meet).
+Affine Reader::view_map(const pugi::xml_node& n, const ViewBox& box, double w, double h) {
     AspectRatio ar;
-    if (const pugi::xml_attribute a = root.attribute("preserveAspectRatio")) {
+    if (const pugi::xml_attribute a = n.attribute("preserveAspectRatio")) {
         if (const auto parsed = parse_aspect_ratio(a.value()))
             ar = *parsed;
         else
-            problem(root, std::string("preserveAspectRatio: '") + a.value() +
-                              "' is invalid; xMidYMid meet is used");
+            problem(n, std::string("preserveAspectRatio: '") + a.value() +
+                           "' is invalid; xMidYMid meet is used");
     }
-    return view_box_transform(*box, ar, 0, 0, scene.width, scene.height);
+    return view_box_transform(box, ar, 0, 0, w, h);
 }
 
 // The element's declarations in cascade order (CSS Cascade 4, 6.1; SVG 2,

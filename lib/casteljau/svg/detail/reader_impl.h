@@ -11,6 +11,7 @@
 #include "casteljau/svg/marker_vertices.h"
 #include "casteljau/svg/reader.h"
 #include "casteljau/svg/style.h"
+#include "casteljau/svg/viewport.h"
 
 #include <algorithm>
 #include <cstring>
@@ -104,6 +105,8 @@ class Reader {
     Scene read();
     std::optional<Affine> viewport(const pugi::xml_node& root, Scene& scene,
                                    const LengthContext& ctx);
+    std::optional<ViewBox> view_box(const pugi::xml_node& n);
+    Affine view_map(const pugi::xml_node& n, const ViewBox& box, double w, double h);
     void check_length_limit(const pugi::xml_node& n, const pugi::xml_attribute& a) const {
         if (const std::size_t len = std::strlen(a.value()); len > options_.max_attribute_bytes)
             fail(n, std::string("attribute ") + a.name() + " is " + std::to_string(len) +
