@@ -47,6 +47,10 @@ void add_svg_options(CLI::App* cmd, SvgOptions& o) {
                     "The user's languages for systemLanguage and <switch>, comma-separated "
                     "(default en)")
         ->delimiter(',');
+    cmd->add_option("--resources-dir", o.resources_dir,
+                    "A folder <image> files may also come from, besides the SVG's own folder and "
+                    "below (never the network)")
+        ->check(CLI::ExistingDirectory);
     // Path data is drawn up to its first error by default now: the flag of
     // that name stays, accepted and doing nothing, for the scripts that pass it.
     cmd->add_flag("--partial-path-data")->group("");

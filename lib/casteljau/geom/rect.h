@@ -52,6 +52,10 @@ struct Rect {
     constexpr Rect united(const Rect& r) const {
         return {std::min(x0, r.x0), std::min(y0, r.y0), std::max(x1, r.x1), std::max(y1, r.y1)};
     }
+    /// The common part of this box and r (empty when they do not meet).
+    constexpr Rect intersected(const Rect& r) const {
+        return {std::max(x0, r.x0), std::max(y0, r.y0), std::min(x1, r.x1), std::min(y1, r.y1)};
+    }
     /// The box grown by `by` on every side.
     constexpr Rect inflated(double by) const { return {x0 - by, y0 - by, x1 + by, y1 + by}; }
     /// Whether p lies in the closed box.

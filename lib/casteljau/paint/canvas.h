@@ -186,14 +186,14 @@ class SolidSpanPainter final : public SpanSink {
     Premul color_;
 };
 
-/// Adapts the span interface to gradient compositing: each pixel's color comes
-/// from the shader at the pixel's centre.
-template <class Pixel>
-class GradientSpanPainter final : public SpanSink {
+/// Adapts the span interface to shaded compositing: each pixel's color comes
+/// from `shader.at(x, y)`, the shader's color at the centre of device pixel
+/// (x, y) (GradientShader, ImageShader).
+template <class Pixel, class Shader>
+class ShadedSpanPainter final : public SpanSink {
   public:
-    /// Paints the gradient `shader` onto `c`.
-    GradientSpanPainter(BasicCanvas<Pixel>& c, const GradientShader& shader)
-        : canvas_(c), shader_(shader) {}
+    /// Paints `shader` onto `c`.
+    ShadedSpanPainter(BasicCanvas<Pixel>& c, const Shader& shader) : canvas_(c), shader_(shader) {}
     /// Source-over of the shaded pixels through the span's coverage.
     void span(const Span& s) override {
         Pixel* d = canvas_.row(s.y - canvas_.origin_y()) + (s.x - canvas_.origin_x());
@@ -202,7 +202,11 @@ class GradientSpanPainter final : public SpanSink {
 
   private:
     BasicCanvas<Pixel>& canvas_;
-    const GradientShader& shader_;
+    const Shader& shader_;
 };
+
+/// Gradient compositing.
+template <class Pixel>
+using GradientSpanPainter = ShadedSpanPainter<Pixel, GradientShader>;
 
 } // namespace casteljau

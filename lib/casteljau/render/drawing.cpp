@@ -19,6 +19,28 @@ Paint Paint::linear(Point from, Point to, std::vector<GradientStop> stops) {
     return {{}, std::move(g), 1};
 }
 
+Paint Paint::image(std::shared_ptr<const RasterImage> image, const Rect& where, bool smooth) {
+    auto p = std::make_shared<Pattern>();
+    p->width = where.width();
+    p->height = where.height();
+    p->transform = Affine::translate(where.min().to_vec());
+    p->image = std::move(image);
+    p->repeat = false;
+    p->smooth = smooth;
+    return {{}, nullptr, 1, std::move(p)};
+}
+
+Paint Paint::tiled(Pattern pattern) {
+    return {{}, nullptr, 1, std::make_shared<const Pattern>(std::move(pattern))};
+}
+
+std::shared_ptr<const Mask> clip_of(const Path& path, const Affine& transform, FillRule rule) {
+    auto m = std::make_shared<Mask>();
+    Shape s{path, transform, Fill{{0, 0, 0, 1}, nullptr, 1, rule}, {}};
+    m->content.children.push_back(Node{std::move(s)});
+    return m;
+}
+
 Drawing::Drawing(int width, int height) : width_(width), height_(height) {
     scene_.width = width;
     scene_.height = height;
@@ -26,14 +48,35 @@ Drawing::Drawing(int width, int height) : width_(width), height_(height) {
 
 Drawing::ShapeId Drawing::fill(const Path& path, const Paint& paint, const Affine& transform,
                                FillRule rule) {
-    Shape s{path, transform, Fill{paint.color, paint.gradient, paint.opacity, rule}, {}};
+    Shape s{
+        path, transform, Fill{paint.color, paint.gradient, paint.opacity, rule, paint.pattern}, {}};
     return add(std::move(s));
 }
 
 Drawing::ShapeId Drawing::stroke(const Path& path, const Paint& paint,
                                  const StrokeGeometry& geometry, const Affine& transform) {
-    Shape s{path, transform, {}, Stroke{paint.color, paint.gradient, paint.opacity, geometry}};
+    Shape s{path,
+            transform,
+            {},
+            Stroke{paint.color, paint.gradient, paint.opacity, geometry, paint.pattern}};
     return add(std::move(s));
+}
+
+Drawing::ShapeId Drawing::image(std::shared_ptr<const RasterImage> image, const Rect& where,
+                                const Affine& transform, bool smooth) {
+    Path rect;
+    rect.move_to(where.min());
+    rect.line_to({where.x1, where.y0});
+    rect.line_to(where.max());
+    rect.line_to({where.x0, where.y1});
+    rect.close();
+    return fill(rect, Paint::image(std::move(image), where, smooth), transform);
+}
+
+Drawing::ShapeId Drawing::add(Group group) {
+    scene_.root.children.push_back(Node{std::move(group)});
+    boxes_.push_back(Renderer::node_reach_box(scene_.root.children.back(), Affine::identity()));
+    return boxes_.size() - 1;
 }
 
 Drawing::ShapeId Drawing::add(Shape shape) {
@@ -46,10 +89,10 @@ const Shape& Drawing::shape(ShapeId id) const {
     return std::get<Shape>(scene_.root.children[id].item);
 }
 
-PixelRect Drawing::replace(ShapeId id, Shape shape) {
+PixelRect Drawing::replace(ShapeId id, Node node) {
     const PixelRect before = damage(id);
-    boxes_[id] = Renderer::reach_box(shape, Affine::identity());
-    scene_.root.children[id].item = std::move(shape);
+    boxes_[id] = Renderer::node_reach_box(node, Affine::identity());
+    scene_.root.children[id] = std::move(node);
     return united(before, damage(id));
 }
 
@@ -79,7 +122,9 @@ bool stroke_intersects_rect(const Shape& s, const Rect& r) {
 std::optional<Drawing::ShapeId> Drawing::shape_at(Point p, double tolerance) const {
     for (std::size_t i = boxes_.size(); i-- > 0;) {
         if (!boxes_[i].inflated(tolerance).contains(p)) continue;
-        const Shape& s = shape(i);
+        const Shape* shape = std::get_if<Shape>(&node(i).item);
+        if (!shape) continue;
+        const Shape& s = *shape;
         // Hit-tests run in the shape's own coordinates, where its curves are
         // exact; the pixel tolerance becomes user units at the largest stretch.
         const Affine to_user = s.transform.inverse();
@@ -96,7 +141,9 @@ std::vector<Drawing::ShapeId> Drawing::shapes_in(const Rect& r) const {
     std::vector<ShapeId> hits;
     for (std::size_t i = 0; i < boxes_.size(); ++i) {
         if (!boxes_[i].intersects(r)) continue;
-        const Shape& s = shape(i);
+        const Shape* shape = std::get_if<Shape>(&node(i).item);
+        if (!shape) continue;
+        const Shape& s = *shape;
         Path device = s.path; // affine maps are exact on the control points
         device.transform(s.transform);
         if ((s.fill && fill_intersects_rect(device, r, s.fill->rule)) ||

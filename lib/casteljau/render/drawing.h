@@ -33,17 +33,30 @@
 
 namespace casteljau {
 
-/// What a fill or a stroke is painted with: a solid color or a gradient, and an opacity.
+/// What a fill or a stroke is painted with: a solid color, a gradient, a
+/// pattern or an image, and an opacity.
 struct Paint {
-    Rgba color;                               ///< used when there is no gradient
+    Rgba color;                               ///< used when there is no gradient nor pattern
     std::shared_ptr<const Gradient> gradient; ///< paints instead of `color` when set
     float opacity = 1;                        ///< multiplies the color's alpha
+    std::shared_ptr<const Pattern> pattern = nullptr; ///< paints instead of both when set
 
     /// A solid color.
     static Paint solid(Rgba c) { return {c, nullptr, 1}; }
     /// A linear gradient from `from` to `to`, in the shape's path coordinates.
     static Paint linear(Point from, Point to, std::vector<GradientStop> stops);
+    /// An image stretched onto `where` (path coordinates), its edge pixels
+    /// extended beyond; sampled bilinearly, or the nearest pixel when not `smooth`.
+    static Paint image(std::shared_ptr<const RasterImage> image, const Rect& where,
+                       bool smooth = true);
+    /// A pattern: its content drawn into each tile at the device resolution.
+    static Paint tiled(Pattern pattern);
 };
+
+/// A clip for Group::clip: the area of `path` (mapped to the canvas by
+/// `transform`) under `rule`, antialiased.
+std::shared_ptr<const Mask> clip_of(const Path& path, const Affine& transform = Affine::identity(),
+                                    FillRule rule = FillRule::NonZero);
 
 /// A retained, editable list of shapes on a width x height pixel canvas.
 class Drawing {
@@ -66,12 +79,24 @@ class Drawing {
                    const Affine& transform = Affine::identity());
     /// Adds any shape (fill and stroke together, element opacity).
     ShapeId add(Shape shape);
+    /// Adds `image` stretched onto `where` (mapped to pixels by `transform`).
+    ShapeId image(std::shared_ptr<const RasterImage> image, const Rect& where,
+                  const Affine& transform = Affine::identity(), bool smooth = true);
+    /// Adds a group: its shapes drawn together into a layer, then clipped,
+    /// masked (Group::clip, Group::mask, see clip_of) and composited with
+    /// its opacity and blend mode. Its shapes' transforms map to the canvas.
+    /// Hit tests (shape_at, shapes_in) pass over groups.
+    ShapeId add(Group group);
     /// Number of shapes, removed ones included.
     std::size_t size() const { return boxes_.size(); }
-    /// Shape `id` as last set.
+    /// Shape `id` as last set (precondition: a shape, not a group).
     const Shape& shape(ShapeId id) const;
-    /// Replaces shape `id`; returns the pixels to redraw.
-    PixelRect replace(ShapeId id, Shape shape);
+    /// Item `id`, a shape or a group, as last set.
+    const Node& node(ShapeId id) const { return scene_.root.children[id]; }
+    /// Replaces item `id` by a shape; returns the pixels to redraw.
+    PixelRect replace(ShapeId id, Shape shape) { return replace(id, Node{std::move(shape)}); }
+    /// Replaces item `id` by a shape or a group; returns the pixels to redraw.
+    PixelRect replace(ShapeId id, Node node);
     /// Removes shape `id` (it becomes an empty shape); returns the pixels to redraw.
     PixelRect remove(ShapeId id) { return replace(id, Shape{}); }
     /// The pixels shape `id` can change, clipped to the canvas.

@@ -1,6 +1,8 @@
 #include "casteljau/render/renderer.h"
 
 #include "casteljau/geom/pixel_index.h"
+#include "casteljau/paint/blend.h"
+#include "casteljau/paint/mask.h"
 #include "casteljau/raster/path_edges.h"
 #include "casteljau/stroke/stroker.h"
 
@@ -34,16 +36,6 @@ Rect device_box(const Rect& b, const Affine& m) {
         .united(m * Point{b.x1, b.y0});
 }
 
-// The union over a node's shapes of box_of(shape).
-template <class BoxOf>
-Rect united_over_shapes(const Node& n, const BoxOf& box_of) {
-    if (const Shape* s = std::get_if<Shape>(&n.item)) return box_of(*s);
-    Rect r = Rect::empty();
-    for (const Node& c : std::get<Group>(n.item).children)
-        r = r.united(united_over_shapes(c, box_of));
-    return r;
-}
-
 } // namespace
 
 RenderStats& RenderStats::operator+=(const RenderStats& o) {
@@ -68,7 +60,7 @@ template <class Pixel>
 RenderStats Renderer::render(const Scene& scene, const Affine& view, BasicCanvas<Pixel>& canvas,
                              const RenderOptions& options, const PixelRect& frame) {
     begin(view, options, frame);
-    draw_group(scene.root, canvas, 0);
+    draw_group(scene.root, canvas);
     return stats_;
 }
 
@@ -89,7 +81,7 @@ RenderStats Renderer::render_nodes(std::span<const Node* const> nodes, const Aff
             const char* next = reinterpret_cast<const char*>(nodes[i + 1]);
             for (std::size_t b = 0; b < sizeof(Node); b += kLine) __builtin_prefetch(next + b);
         }
-        draw_node(*nodes[i], canvas, 0);
+        draw_node(*nodes[i], canvas);
     }
     return stats_;
 }
@@ -99,6 +91,7 @@ void Renderer::begin(const Affine& view, const RenderOptions& options, const Pix
     frame_ = frame;
     options_ = &options;
     stats_ = {};
+    tile_of_ = nullptr; // a new scene may hold another pattern at the same address
 }
 
 Rect Renderer::reach_box(const Shape& s, const Affine& view) {
@@ -107,62 +100,92 @@ Rect Renderer::reach_box(const Shape& s, const Affine& view) {
 }
 
 Rect Renderer::node_reach_box(const Node& n, const Affine& view) {
-    return united_over_shapes(n, [&](const Shape& s) { return reach_box(s, view); });
+    if (const Shape* s = std::get_if<Shape>(&n.item)) return reach_box(*s, view);
+    return group_reach_box(std::get<Group>(n.item), view);
+}
+
+Rect Renderer::group_reach_box(const Group& g, const Affine& view) {
+    Rect r = Rect::empty();
+    for (const Node& c : g.children) r = r.united(node_reach_box(c, view));
+    // Outside its content, a clip or a mask is 0: nothing shows there.
+    if (g.clip) r = r.intersected(group_reach_box(g.clip->content, view));
+    if (g.mask) r = r.intersected(group_reach_box(g.mask->content, view));
+    return r;
 }
 
 template <class Target>
-Target& Renderer::layer(int depth) {
+Target& Renderer::acquire_layer() {
     auto& layers = std::get<std::vector<std::unique_ptr<Target>>>(layers_);
-    while (int(layers.size()) <= depth) layers.push_back(std::make_unique<Target>());
-    return *layers[std::size_t(depth)];
+    if (int(layers.size()) <= layers_used_) layers.push_back(std::make_unique<Target>());
+    return *layers[std::size_t(layers_used_++)];
 }
 
 template <class Target>
-void Renderer::draw_group(const Group& g, Target& target, int depth) {
-    for (const Node& n : g.children) draw_node(n, target, depth);
+void Renderer::draw_children(const Group& g, Target& target) {
+    for (const Node& n : g.children) draw_node(n, target);
 }
 
 template <class Target>
-void Renderer::draw_node(const Node& n, Target& target, int depth) {
+void Renderer::draw_node(const Node& n, Target& target) {
     if (const Shape* s = std::get_if<Shape>(&n.item)) {
         // Opacity on a shape with both fill and stroke applies to the two
         // together (SVG 1.1, 14.5): a layer, or the stroke would show the
         // fill through it. With one paint, scaling its alpha is the same.
         if (s->opacity < 1.0f && s->fill && s->stroke)
-            in_layer(n, target, depth, s->opacity, [&](Target& l) { draw_shape(*s, l, 1.0f); });
+            in_layer(reach_box(*s, view_), target, s->opacity, BlendMode::Normal,
+                     [&](Target& l) { draw_shape(*s, l, 1.0f); });
         else
             draw_shape(*s, target, s->opacity);
         return;
     }
-    const Group& child = std::get<Group>(n.item);
-    if (child.opacity >= 1.0f)
-        draw_group(child, target, depth);
-    else
-        in_layer(n, target, depth, child.opacity,
-                 [&](Target& l) { draw_group(child, l, depth + 1); });
+    draw_group(std::get<Group>(n.item), target);
+}
+
+template <class Target>
+void Renderer::draw_group(const Group& g, Target& target) {
+    if (!g.needs_layer()) {
+        draw_children(g, target);
+        return;
+    }
+    in_layer(group_reach_box(g, view_), target, g.opacity, g.blend, [&](Target& l) {
+        draw_children(g, l);
+        if (g.clip) mask_layer(*g.clip, l);
+        if (g.mask) mask_layer(*g.mask, l);
+    });
+}
+
+template <class Target>
+void Renderer::mask_layer(const Mask& mask, Target& layer) {
+    Target& m = acquire_layer<Target>();
+    m.reset(layer.width(), layer.height(), layer.origin_x(), layer.origin_y());
+    draw_group(mask.content, m);
+    const auto t = stage_start(*options_);
+    apply_mask(layer, m, mask.kind);
+    add_stage_ms(stats_.raster_ms, *options_, t);
+    release_layer();
 }
 
 template <class Target, class Draw>
-void Renderer::in_layer(const Node& n, Target& target, int depth, float opacity, Draw draw) {
+void Renderer::in_layer(const Rect& b, Target& target, float opacity, BlendMode blend, Draw draw) {
     if (opacity <= 0.0f) return;
-    // The layer covers all that the node can draw: its shapes' control
-    // boxes grown by their strokes' reach (a wide stroke, a miter, a square
-    // cap), with one pixel of margin for antialiasing, clipped to the target.
-    // (It once took the paths' tight bounds: a stroke's outer half was cut
-    // away, and a horizontal line's stroke was drawn as a hairline.)
-    const Rect b = node_reach_box(n, view_);
+    // The layer covers all that the node can draw (node_reach_box: its
+    // shapes' control boxes grown by their strokes' reach, a wide stroke, a
+    // miter, a square cap), with one pixel of margin for antialiasing,
+    // clipped to the target. (It once took the paths' tight bounds: a
+    // stroke's outer half was cut away.)
     if (b.is_empty()) return;
     const int tx0 = target.origin_x(), tx1 = tx0 + target.width();
     const int ty0 = target.origin_y(), ty1 = ty0 + target.height();
     const int x0 = floor_in(b.x0 - 1, tx0, tx1), y0 = floor_in(b.y0 - 1, ty0, ty1);
     const int x1 = ceil_in(b.x1 + 1, tx0, tx1), y1 = ceil_in(b.y1 + 1, ty0, ty1);
     if (x1 <= x0 || y1 <= y0) return;
-    Target& l = layer<Target>(depth);
+    Target& l = acquire_layer<Target>();
     l.reset(x1 - x0, y1 - y0, x0, y0);
     draw(l);
     const auto t = stage_start(*options_);
-    target.composite_layer(l, opacity);
+    composite_layer(target, l, opacity, blend);
     add_stage_ms(stats_.raster_ms, *options_, t);
+    release_layer();
 }
 
 template <class Target>
@@ -191,8 +214,8 @@ void Renderer::draw_shape(const Shape& s, Target& target, float opacity) {
             add_path_edges(s.path, m, options_->flatten, edges_, options_->measure_error);
         stats_ += shape;
         add_stage_ms(stats_.flatten_ms, *options_, t);
-        paint(s, s.fill->color, s.fill->gradient.get(), s.fill->opacity * opacity, s.fill->rule,
-              target);
+        paint(s, s.fill->color, s.fill->gradient.get(), s.fill->pattern.get(),
+              s.fill->opacity * opacity, s.fill->rule, target);
     }
     if (s.stroke && !s.stroke_first) draw_stroke(s, m, target, opacity);
 }
@@ -241,8 +264,8 @@ void Renderer::draw_stroke(const Shape& s, const Affine& m, Target& target, floa
             stats_.flatten.segments_out += poly.size();
         }
         add_stage_ms(stats_.flatten_ms, *options_, t);
-        paint(s, st.color, st.gradient.get(), st.opacity * opacity * hairline, FillRule::NonZero,
-              target);
+        paint(s, st.color, st.gradient.get(), st.pattern.get(), st.opacity * opacity * hairline,
+              FillRule::NonZero, target);
         y0 = y1;
     }
 }
@@ -258,8 +281,8 @@ double Renderer::stroke_reach(const Shape& s, const Affine& m) {
 }
 
 template <class Target>
-void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float opacity,
-                     FillRule rule, Target& target) {
+void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, const Pattern* pattern,
+                     float opacity, FillRule rule, Target& target) {
     const auto t = stage_start(*options_);
     const bool antialias = options_->antialias && s.antialias;
     // Spans are cut to the target's columns (the edges are the frame's),
@@ -273,7 +296,12 @@ void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float
         ColumnClipSink clipped(painter, x0, x1);
         raster_.fill(edges_, rule, antialias, clipped);
     };
-    if (gradient) {
+    if (pattern) {
+        if (prepare_pattern(*pattern, view_ * s.transform, opacity)) {
+            ImageSpanPainter<typename Target::pixel_type> painter{target, image_shader_};
+            fill_through(painter);
+        }
+    } else if (gradient) {
         // Gradient space -> device: the shape's transform, then for
         // objectBoundingBox units the unit square onto the shape's box (an
         // empty box paints nothing, SVG 1.1 13.2.2), then gradientTransform.
@@ -286,7 +314,7 @@ void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float
         }
         if (gradient_shader_.prepare(*gradient, to_device * gradient->transform, opacity,
                                      options_->linear_light_gradients)) {
-            GradientSpanPainter painter{target, gradient_shader_};
+            GradientSpanPainter<typename Target::pixel_type> painter{target, gradient_shader_};
             fill_through(painter);
         }
     } else {
@@ -297,6 +325,44 @@ void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, float
         }
     }
     add_stage_ms(stats_.raster_ms, *options_, t);
+}
+
+bool Renderer::prepare_pattern(const Pattern& p, const Affine& m, float opacity) {
+    if (!(p.width > 0 && p.height > 0)) return false;
+    const Affine to_device = m * p.transform; // tile space -> device
+    if (p.image)
+        return image_shader_.prepare(
+            *p.image,
+            to_device * Affine::scale(p.width / p.image->width, p.height / p.image->height),
+            opacity, p.smooth, p.repeat);
+    // The tile is drawn at the device resolution: as many pixels as the
+    // tile's sides are long on the device (its columns' lengths under the
+    // map), rounded up, at least one, and fewer where that is over
+    // kMaxTilePixels. A tile of a fraction of a pixel is thus drawn into
+    // one pixel, whose exact-area coverage makes it the tile's mean color.
+    if (tile_of_ != &p || !(tile_map_ == to_device)) {
+        const double sx = std::hypot(to_device.a, to_device.b) * p.width;
+        const double sy = std::hypot(to_device.c, to_device.d) * p.height;
+        if (!(sx > 0 && sy > 0) || !std::isfinite(sx * sy)) return false;
+        const double shrink = std::min(1.0, std::sqrt(double(kMaxTilePixels) / (sx * sy)));
+        const int w = std::clamp(int(std::ceil(sx * shrink)), 1, int(kMaxTilePixels));
+        const int h = std::clamp(int(std::ceil(sy * shrink)), 1, int(kMaxTilePixels / w));
+        if (!tile_renderer_) tile_renderer_ = std::make_unique<Renderer>();
+        tile_canvas_.reset(w, h);
+        tile_renderer_->begin(Affine::scale(w / p.width, h / p.height), *options_, {0, 0, w, h});
+        tile_renderer_->draw_group(p.content, tile_canvas_);
+        stats_ += tile_renderer_->stats_;
+        tile_.width = w;
+        tile_.height = h;
+        tile_.pixels.resize(std::size_t(w) * std::size_t(h));
+        for (int y = 0; y < h; ++y)
+            std::copy_n(tile_canvas_.row(y), w, tile_.pixels.begin() + std::ptrdiff_t(y) * w);
+        tile_of_ = &p;
+        tile_map_ = to_device;
+    }
+    return image_shader_.prepare(
+        tile_, to_device * Affine::scale(p.width / tile_.width, p.height / tile_.height), opacity,
+        p.smooth, p.repeat);
 }
 
 // The two pixel formats a renderer draws onto.

@@ -1,14 +1,25 @@
 // Renderer: a Scene onto a Canvas or a Canvas8. Shape by shape: edges (flatten + clip,
 // raster/path_edges.h) -> coverage spans (raster/rasterizer.h) -> source-over
-// compositing (paint/canvas.h); groups with opacity go through an offscreen
-// layer limited to the group's bounds. The renderer keeps its edge list,
-// rasterizer buffers and layers between shapes and frames: in steady state a
-// frame allocates nothing new.
+// compositing (paint/canvas.h). A group that needs a layer (opacity, clip,
+// mask, blend mode, isolation) is drawn into an offscreen layer limited to
+// its bounds, which is then clipped and masked by its clip's and mask's
+// content drawn into layers of the same place (paint/mask.h), and
+// composited with the group's opacity and blend mode (paint/blend.h).
+// Patterns are drawn into a tile at the device resolution, then painted as
+// an image (paint/image_shader.h). The renderer keeps its edge list,
+// rasterizer buffers, layers and tiles between shapes and frames: in steady
+// state a frame allocates nothing new.
+//
+// Layer memory: one layer per group, clip or mask in flight, each at most
+// the target's size; what is in flight at once is bounded by the scene's
+// nesting depth (the SVG reader's max_depth). Pattern tiles are at most
+// kMaxTilePixels each, one per pattern nesting level.
 #pragma once
 
 #include "casteljau/flatten/path_flatten.h"
 #include "casteljau/paint/canvas.h"
 #include "casteljau/paint/gradient.h"
+#include "casteljau/paint/image_shader.h"
 #include "casteljau/raster/edge.h"
 #include "casteljau/raster/rasterizer.h"
 #include "casteljau/scene/scene.h"
@@ -25,6 +36,10 @@ namespace casteljau {
 /// draw_stroke): a band of kBandRows rows (bands.h) is whole strips, so it
 /// builds each outline once.
 inline constexpr int kStrokeStripRows = 128;
+
+/// The most pixels a pattern tile is drawn into (16 MiB of float pixels):
+/// a larger tile at device resolution is drawn at a lower one.
+inline constexpr long kMaxTilePixels = 1L << 20;
 
 /// How to render: flattening, antialiasing, statistics, gradient interpolation.
 struct RenderOptions {
@@ -73,8 +88,11 @@ class Renderer {
     /// its control box mapped, grown by the stroke's reach.
     static Rect reach_box(const Shape& s, const Affine& view);
 
-    /// reach_box of a node: a shape's, or the union of a group's children's.
+    /// reach_box of a node: a shape's, or group_reach_box of a group.
     static Rect node_reach_box(const Node& n, const Affine& view);
+    /// The union of a group's children's reach boxes, cut to its clip's
+    /// and its mask's content (nothing shows outside them).
+    static Rect group_reach_box(const Group& g, const Affine& view);
 
     /// How far (device px) a shape's stroke can reach beyond its path.
     static double stroke_reach(const Shape& s, const Affine& to_device);
@@ -82,31 +100,52 @@ class Renderer {
   private:
     void begin(const Affine& view, const RenderOptions& options, const PixelRect& frame);
     template <class Target>
-    void draw_group(const Group& g, Target& target, int depth);
+    void draw_children(const Group& g, Target& target);
     template <class Target>
-    void draw_node(const Node& n, Target& target, int depth);
+    void draw_group(const Group& g, Target& target);
+    template <class Target>
+    void draw_node(const Node& n, Target& target);
     template <class Target>
     void draw_shape(const Shape& s, Target& target, float opacity);
-    /// Draws into an offscreen layer over the node's bounds, composited with `opacity`.
+    /// Draws into an offscreen layer over `box` (device px) cut to the
+    /// target, composited with `opacity` and `blend`.
     template <class Target, class Draw>
-    void in_layer(const Node& n, Target& target, int depth, float opacity, Draw draw);
+    void in_layer(const Rect& box, Target& target, float opacity, BlendMode blend, Draw draw);
+    /// Scales `layer` by the mask's value, from its content drawn at the same place.
+    template <class Target>
+    void mask_layer(const Mask& mask, Target& layer);
     template <class Target>
     void draw_stroke(const Shape& s, const Affine& m, Target& target, float opacity);
-    /// Composites the current edge list with a solid color or a gradient.
+    /// Composites the current edge list with a paint: a solid color, a
+    /// gradient or a pattern.
     template <class Target>
-    void paint(const Shape& s, Rgba color, const Gradient* gradient, float opacity, FillRule rule,
-               Target& target);
-    /// The layer of nesting depth `depth`, in the target's pixel format.
+    void paint(const Shape& s, Rgba color, const Gradient* gradient, const Pattern* pattern,
+               float opacity, FillRule rule, Target& target);
+    /// Sets image_shader_ to paint `p` mapped to device space by `m` (the
+    /// shape's user space to device); false when it paints nothing.
+    bool prepare_pattern(const Pattern& p, const Affine& m, float opacity);
+    /// A free layer in the target's pixel format; release it in reverse order.
     template <class Target>
-    Target& layer(int depth);
+    Target& acquire_layer();
+    void release_layer() { --layers_used_; }
 
     EdgeList edges_;
     Rasterizer raster_;
     GradientShader gradient_shader_;   ///< its color table is reused across shapes
     Stroker stroker_;                  ///< stroke outlines, buffers reused across shapes
     StrokeGeometry hairline_geometry_; ///< a hairline's widened copy of its geometry
-    /// One layer per group nesting depth, per pixel format.
+    /// Layers in flight, a stack, per pixel format; the first layers_used_ are taken.
     std::tuple<std::vector<std::unique_ptr<Canvas>>, std::vector<std::unique_ptr<Canvas8>>> layers_;
+    int layers_used_ = 0;
+    ImageShader image_shader_; ///< images and pattern tiles
+    /// A pattern's tile: drawn by a renderer of its own, kept while the
+    /// same pattern is painted under the same map (the strips of a stroke,
+    /// the shapes of a band).
+    std::unique_ptr<Renderer> tile_renderer_;
+    Canvas tile_canvas_;
+    RasterImage tile_;
+    const Pattern* tile_of_ = nullptr;
+    Affine tile_map_;
     Affine view_;
     PixelRect frame_;
     const RenderOptions* options_ = nullptr;

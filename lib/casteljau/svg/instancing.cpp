@@ -35,8 +35,9 @@ void Reader::use(const pugi::xml_node& n, const StyleState& style, const Affine&
         return length(n, attr, percent_of, ctx).value_or(0);
     };
     const Affine moved = m * Affine::translate({at("x", vw_), at("y", vh_)});
-    instancing_.push_back(target);
     const std::string_view kind = target.name();
+    if (clip_mode_ && !is_shape(kind)) return; // a clip path's use must name a shape
+    instancing_.push_back(target);
     if (kind == "symbol" || kind == "svg") {
         if (conditions_hold(target)) {
             StyleState inner = style;
@@ -45,7 +46,8 @@ void Reader::use(const pugi::xml_node& n, const StyleState& style, const Affine&
             apply_declarations(target, style, inner, &props, context(inner));
             if (!props.display_none) {
                 Group g{props.opacity, {}};
-                nested_viewport(target, n, inner, moved, g, depth + 1);
+                nested_viewport(target, n, inner, props, moved, g, depth + 1);
+                if (has_effects(props)) apply_effects(target, props, moved, g, depth + 1);
                 add_group(out, std::move(g));
             }
         }
@@ -62,10 +64,12 @@ void Reader::use(const pugi::xml_node& n, const StyleState& style, const Affine&
 // enclosing viewport; width and height are 100% when absent; a negative
 // one is an error and a zero one disables rendering. Its viewBox,
 // preserveAspectRatio and, for a symbol, refX and refY (SVG 2) map its
-// content. Percentages inside refer to it. Not clipped to it yet: the
-// overflow property needs clip paths.
+// content. Percentages inside refer to it. Its content is clipped to it
+// unless its overflow is visible or auto (SVG 1.1, 14.3.3; hidden is the
+// UA style sheet's value for these elements).
 void Reader::nested_viewport(const pugi::xml_node& n, const pugi::xml_node& sizes,
-                             const StyleState& style, const Affine& m, Group& out, int depth) {
+                             const StyleState& style, const ElementProps& props, const Affine& m,
+                             Group& out, int depth) {
     const LengthContext ctx = context(style);
     const auto side = [&](const char* attr, double full) -> std::optional<double> {
         std::optional<double> v = length(sizes, attr, full, ctx);
@@ -90,12 +94,17 @@ void Reader::nested_viewport(const pugi::xml_node& n, const pugi::xml_node& size
             Point{length(n, "refX", vw_, ctx).value_or(0), length(n, "refY", vh_, ctx).value_or(0)};
     Affine view = box ? view_map(n, *box, *w, *h) : Affine::identity();
     if (ref) view = Affine::translate(Point{0, 0} - view * *ref) * view;
+    const Affine port = inner; // the viewport's own coordinates: it is [0, w] x [0, h]
     inner = inner * view;
     const double saved_w = vw_, saved_h = vh_;
     vw_ = box ? box->w : *w;
     vh_ = box ? box->h : *h;
-    walk(n, style, inner, out, depth + 1);
+    Group content;
+    walk(n, style, inner, content, depth + 1);
     vw_ = saved_w, vh_ = saved_h;
+    if (!props.overflow_visible.value_or(false) && !clip_mode_)
+        content.clip = viewport_clip(content, {0, 0, *w, *h}, port);
+    add_group(out, std::move(content));
 }
 
 // How many elements the walk would visit under `n`, <use> instances
@@ -221,8 +230,8 @@ std::optional<double> fixed_orient_deg(std::string_view v) {
 // One marker at one vertex: its viewport of markerWidth x markerHeight
 // (default 3 x 3; scaled by the stroke width unless markerUnits is
 // userSpaceOnUse), its viewBox and preserveAspectRatio, refX/refY (in
-// view-box units) on the vertex, turned by orient. Not clipped to its
-// viewport yet (overflow needs clip paths).
+// view-box units) on the vertex, turned by orient; clipped to its
+// viewport unless its overflow is visible or auto.
 void Reader::marker(const pugi::xml_node& mk, const MarkerVertex& v, const Shape& s,
                     double stroke_width, Group& out, int depth) {
     ElementProps props;
@@ -260,13 +269,16 @@ void Reader::marker(const pugi::xml_node& mk, const MarkerVertex& v, const Shape
     const Affine view = box ? view_map(mk, *box, *w, *h) : Affine::identity();
     const Point ref{length(mk, "refX", vw_, ctx).value_or(0),
                     length(mk, "refY", vh_, ctx).value_or(0)};
-    const Affine m = s.transform * Affine::translate(v.at - Point{0, 0}) *
-                     Affine::rotate(angle * std::numbers::pi / 180) * Affine::scale(k) *
-                     Affine::translate(Point{0, 0} - view * ref) * view;
+    // The marker's viewport is [0, w] x [0, h] in `port`, with refX, refY
+    // (mapped by the viewBox) on the vertex.
+    const Affine port = s.transform * Affine::translate(v.at - Point{0, 0}) *
+                        Affine::rotate(angle * std::numbers::pi / 180) * Affine::scale(k) *
+                        Affine::translate(Point{0, 0} - view * ref);
     Group g{props.opacity, {}};
     instancing_.push_back(mk);
-    walk(mk, style, m, g, depth + 1);
+    walk(mk, style, port * view, g, depth + 1);
     instancing_.pop_back();
+    if (!props.overflow_visible.value_or(false)) g.clip = viewport_clip(g, {0, 0, *w, *h}, port);
     add_group(out, std::move(g));
 }
 

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 namespace casteljau {
 
@@ -62,8 +63,10 @@ Scene Reader::read() {
         fail(root, "more than " + std::to_string(options_.max_elements) +
                        " elements once <use> is expanded (the limit)");
     walk(root, style, *view, scene.root, 1);
-    if (props.opacity < 1)
-        scene.root = Group{1, {Node{Group{props.opacity, std::move(scene.root.children)}}}};
+    Group top{props.opacity, std::move(scene.root.children)};
+    if (has_effects(props)) apply_effects(root, props, *view, top, 1);
+    scene.root = {};
+    add_group(scene.root, std::move(top));
     return scene;
 }
 
@@ -238,17 +241,27 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
     const std::string_view name = n.name();
     if (name.find(':') != name.npos || silently_skipped(name)) return; // foreign namespaces
     const bool group = name == "g" || name == "a";
-    const bool structure = group || name == "switch" || name == "svg" || name == "use";
+    const bool structure =
+        group || name == "switch" || name == "svg" || name == "use" || name == "image";
     if (!structure && !is_shape(name)) {
         if (unsupported(name)) warn(n, "not supported yet; skipped");
         return; // symbol too: drawn only through <use>
     }
+    // A clip path holds shapes and uses of shapes; any other child is
+    // invalid there and ignored (CSS Masking 1, 6.1).
+    if (clip_mode_ && !is_shape(name) && name != "use") return;
     if (!conditions_hold(n)) return;
     StyleState style = parent_style;
     ElementProps props;
     apply_declarations(n, parent_style, style, nullptr, context(parent_style));
     apply_declarations(n, parent_style, style, &props, context(style));
     if (props.display_none) return;
+    if (clip_mode_) { // in a clip path, only the clip-path of its children counts
+        props.opacity = 1;
+        props.mask.clear();
+        props.blend = BlendMode::Normal;
+        props.isolate = false;
+    }
     Affine m = ctm;
     if (const pugi::xml_attribute t = n.attribute("transform")) {
         const TransformResult tr = parse_transform_list(t.value());
@@ -268,15 +281,25 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
                 break;
             }
     } else if (name == "svg") {
-        nested_viewport(n, n, style, m, g, depth);
+        nested_viewport(n, n, style, props, m, g, depth);
     } else if (name == "use") {
         use(n, style, m, g, depth);
-    } else if (std::optional<Shape> sh = shape(n, name, style, m, props)) {
+    } else if (name == "image") {
+        image(n, style, m, g);
+    } else if (depth_ = depth; std::optional<Shape> sh = shape(n, name, style, m, props)) {
         const bool markable =
             name == "path" || name == "line" || name == "polyline" || name == "polygon";
-        if (!markable ||
+        if (!markable || clip_mode_ ||
             (style.marker_start.empty() && style.marker_mid.empty() && style.marker_end.empty())) {
-            out.children.push_back(Node{std::move(*sh)});
+            if (!has_effects(props)) {
+                out.children.push_back(Node{std::move(*sh)});
+                return;
+            }
+            // Its effects on a group of its own, which carries its opacity too.
+            sh->opacity = 1;
+            g.children.push_back(Node{std::move(*sh)});
+            apply_effects(n, props, m, g, depth);
+            add_group(out, std::move(g));
             return;
         }
         // The element's opacity covers its markers too: the group carries it.
@@ -306,6 +329,7 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
             g.children.push_back(Node{std::move(*sh)});
         }
     }
+    if (has_effects(props)) apply_effects(n, props, m, g, depth);
     add_group(out, std::move(g));
 }
 
@@ -321,10 +345,15 @@ std::optional<Shape> Reader::shape(const pugi::xml_node& n, std::string_view nam
     s.source_line = line_of(n.offset_debug());
     s.stroke_first = style.paint_order[1] < style.paint_order[0];
     s.antialias = style.antialias;
-    if (const auto p = paint(n, style.fill, style))
-        s.fill = Fill{p->color, p->gradient, style.fill_opacity, style.fill_rule};
-    if (const auto p = paint(n, style.stroke, style); p && style.stroke_geometry.width > 0)
-        s.stroke = Stroke{p->color, p->gradient, style.stroke_opacity, style.stroke_geometry};
+    if (clip_mode_) { // a clip path's shape: an opaque fill with its clip-rule
+        s.fill = Fill{{0, 0, 0, 1}, nullptr, 1, style.clip_rule, nullptr};
+        return s;
+    }
+    if (const auto p = paint(n, style.fill, style, s.path))
+        s.fill = Fill{p->color, p->gradient, style.fill_opacity, style.fill_rule, p->pattern};
+    if (const auto p = paint(n, style.stroke, style, s.path); p && style.stroke_geometry.width > 0)
+        s.stroke =
+            Stroke{p->color, p->gradient, style.stroke_opacity, style.stroke_geometry, p->pattern};
     if (props.non_scaling_stroke && s.stroke) to_host_space(s);
     return s;
 }
@@ -333,8 +362,8 @@ std::optional<Shape> Reader::shape(const pugi::xml_node& n, std::string_view nam
 // the host coordinate space, the scene's device space, so its width and
 // dashes are in scene pixels whatever the transforms. The path is mapped
 // into that space and the shape's transform becomes the identity; each
-// gradient is remapped to stay where it was (to userSpaceOnUse, composing
-// the old map and, for objectBoundingBox units, the user-space box).
+// gradient and pattern is remapped to stay where it was (to userSpaceOnUse,
+// composing the old map and, for objectBoundingBox units, the user-space box).
 void Reader::to_host_space(Shape& s) {
     const Affine m = s.transform;
     const Rect box = s.path.bounds();
@@ -351,21 +380,38 @@ void Reader::to_host_space(Shape& s) {
     };
     if (s.fill) remap(s.fill->gradient);
     remap(s.stroke->gradient);
+    const auto remap_pattern = [&](std::shared_ptr<const Pattern>& p) {
+        if (!p) return;
+        auto moved = std::make_shared<Pattern>(*p); // already resolved to the user-space box
+        moved->transform = m * p->transform;
+        p = std::move(moved);
+    };
+    if (s.fill) remap_pattern(s.fill->pattern);
+    remap_pattern(s.stroke->pattern);
     s.path.transform(m);
     s.transform = Affine::identity();
 }
 
 std::optional<Reader::ResolvedPaint> Reader::paint(const pugi::xml_node& n, const PaintSpec& spec,
-                                                   const StyleState& style) {
+                                                   const StyleState& style, const Path& path) {
     if (spec.from_url) {
+        if (const pugi::xml_node p = by_id(spec.url); p && std::strcmp(p.name(), "pattern") == 0) {
+            if (std::find(instancing_.begin(), instancing_.end(), p) != instancing_.end()) {
+                problem(n, "pattern #" + spec.url + " paints its own content; none is used");
+                return std::nullopt;
+            }
+            if (auto pattern = this->pattern(p, path, depth_))
+                return ResolvedPaint{{}, nullptr, std::move(pattern)};
+            return std::nullopt; // a disabled pattern paints nothing, with no fallback
+        }
         const svg_detail::GradientRef g = gradients_->resolve(spec.url);
         for (const svg_detail::GradientProblem& p : gradients_->take_problems())
             problem(p.where, p.message);
         if (!g.warning.empty() && warned_.insert(g.warning).second)
             warn(g.where ? g.where : n, g.warning);
-        if (g.gradient) return ResolvedPaint{{}, g.gradient};
+        if (g.gradient) return ResolvedPaint{{}, g.gradient, nullptr};
     }
-    if (const auto c = resolve_paint(spec, style)) return ResolvedPaint{*c, nullptr};
+    if (const auto c = resolve_paint(spec, style)) return ResolvedPaint{*c, nullptr, nullptr};
     return std::nullopt;
 }
 
@@ -448,7 +494,10 @@ SvgResult read_svg_file(const std::string& path, const SvgOptions& options) {
         r.io_error = file.io_error;
         return r;
     }
-    return parse_svg(file.text, path, options);
+    SvgOptions o = options;
+    if (o.base_dir.empty()) o.base_dir = std::filesystem::path(path).parent_path().string();
+    if (o.base_dir.empty()) o.base_dir = ".";
+    return parse_svg(file.text, path, o);
 }
 
 } // namespace casteljau

@@ -45,6 +45,19 @@ struct SvgOptions {
     /// The first problem in the input is an error (no image), instead of a
     /// warning and the spec's recovery.
     bool strict = false;
+    /// Where the files an \<image\> names may come from, besides the SVG's
+    /// own folder and below (svg/resource_url.h); "" for none. Images are
+    /// never fetched from the network.
+    std::string resources_dir;
+    /// The SVG's folder, for relative hrefs: read_svg_file sets it from the
+    /// path; parse_svg takes the current directory when it is "".
+    std::string base_dir;
+    /// An \<image\>'s pixels (width x height as its file declares them; 16
+    /// bytes each once decoded, so 2^25 pixels are 512 MiB); a larger
+    /// image is not drawn, with a warning.
+    std::size_t max_image_pixels = std::size_t(1) << 25;
+    /// SVG files drawn by \<image\> inside SVG files drawn by \<image\>, at most.
+    int max_image_nesting = 8;
 };
 
 /// A located message about the input.

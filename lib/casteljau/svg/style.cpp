@@ -1,5 +1,6 @@
 #include "casteljau/svg/style.h"
 
+#include "casteljau/paint/blend.h"
 #include "casteljau/svg/color.h"
 
 #include <algorithm>
@@ -50,8 +51,9 @@ std::optional<PaintSpec> parse_paint(std::string_view v) {
     return std::nullopt;
 }
 
-// A marker reference: none, or url(#id) (quotes allowed); the id, "" for none.
-std::optional<std::string> parse_marker(std::string_view v) {
+// A reference to an element (markers, clip-path, mask): none, or url(#id)
+// (quotes allowed); the id, "" for none.
+std::optional<std::string> parse_reference(std::string_view v) {
     v = trim(v);
     if (v == "none") return std::string();
     if (v.rfind("url(", 0) != 0 || v.back() != ')') return std::nullopt;
@@ -290,14 +292,14 @@ std::string apply_property(std::string_view name, std::string_view value, const 
     if (name == "fill") return set(s.fill, parent.fill, parse_paint(value), kPaint);
     constexpr const char* kMarker = "none or url(#id)";
     if (name == "marker-start")
-        return set(s.marker_start, parent.marker_start, parse_marker(value), kMarker);
+        return set(s.marker_start, parent.marker_start, parse_reference(value), kMarker);
     if (name == "marker-mid")
-        return set(s.marker_mid, parent.marker_mid, parse_marker(value), kMarker);
+        return set(s.marker_mid, parent.marker_mid, parse_reference(value), kMarker);
     if (name == "marker-end")
-        return set(s.marker_end, parent.marker_end, parse_marker(value), kMarker);
+        return set(s.marker_end, parent.marker_end, parse_reference(value), kMarker);
     if (name == "marker") {
         const std::string e =
-            set(s.marker_start, parent.marker_start, parse_marker(value), kMarker);
+            set(s.marker_start, parent.marker_start, parse_reference(value), kMarker);
         if (e.empty()) s.marker_mid = s.marker_end = s.marker_start;
         if (e.empty() && inherit)
             s.marker_mid = parent.marker_mid, s.marker_end = parent.marker_end;
@@ -363,6 +365,48 @@ std::string apply_property(std::string_view name, std::string_view value, const 
     if (name == "transform-origin")
         return set(props.transform_origin, Vec2{}, parse_transform_origin(value, ctx),
                    "a transform origin");
+    constexpr const char* kReference = "none or url(#id)";
+    if (name == "clip-path")
+        return set(props.clip_path, std::string(), parse_reference(value), kReference);
+    if (name == "mask") return set(props.mask, std::string(), parse_reference(value), kReference);
+    if (name == "clip-rule")
+        return set(s.clip_rule, parent.clip_rule,
+                   lookup<FillRule>(
+                       value, {{"nonzero", FillRule::NonZero}, {"evenodd", FillRule::EvenOdd}}),
+                   "nonzero or evenodd");
+    if (name == "mix-blend-mode")
+        return set(props.blend, BlendMode::Normal, parse_blend_mode(value), "a blend mode");
+    if (name == "isolation")
+        return set(props.isolate, false, lookup<bool>(value, {{"auto", false}, {"isolate", true}}),
+                   "auto or isolate");
+    if (name == "mask-type")
+        return set(props.mask_alpha, false,
+                   lookup<bool>(value, {{"luminance", false}, {"alpha", true}}),
+                   "luminance or alpha");
+    if (name == "color-interpolation")
+        return set(s.linear_rgb, parent.linear_rgb,
+                   lookup<bool>(value, {{"auto", false}, {"sRGB", false}, {"linearRGB", true}}),
+                   "auto, sRGB or linearRGB");
+    if (name == "image-rendering")
+        return set(s.smooth_images, parent.smooth_images,
+                   lookup<bool>(value, {{"auto", true},
+                                        {"optimizeQuality", true},
+                                        {"smooth", true},
+                                        {"high-quality", true},
+                                        {"optimizeSpeed", false},
+                                        {"pixelated", false},
+                                        {"crisp-edges", false}}),
+                   "auto, optimizeQuality, optimizeSpeed, smooth, pixelated or crisp-edges");
+    // overflow: visible and auto show what is outside a viewport; hidden,
+    // scroll and clip clip it (SVG 1.1, 14.3.3: auto is visible).
+    if (name == "overflow")
+        return set(props.overflow_visible, false,
+                   lookup<bool>(value, {{"visible", true},
+                                        {"auto", true},
+                                        {"hidden", false},
+                                        {"scroll", false},
+                                        {"clip", false}}),
+                   "visible, hidden, scroll, auto or clip");
     if (name == "display") {
         props.display_none = value == "none";
         return "";

@@ -25,6 +25,7 @@
 #include "casteljau/scene/scene.h"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -71,6 +72,12 @@ struct StyleState {
     /// shape-rendering: false for crispEdges and optimizeSpeed (no antialiasing).
     bool antialias = true;
     bool visible = true;
+    FillRule clip_rule = FillRule::NonZero;
+    /// color-interpolation: linearRGB (a mask's luminance is then taken in linear light).
+    bool linear_rgb = false;
+    /// image-rendering: false for optimizeSpeed, pixelated and crisp-edges
+    /// (an image's nearest pixel, not a bilinear blend).
+    bool smooth_images = true;
 };
 
 /// Not inherited: reset for every element.
@@ -84,6 +91,15 @@ struct ElementProps {
     /// vector-effect: non-scaling-stroke (the other SVG 2 values are valid
     /// and, as in browsers, do nothing).
     bool non_scaling_stroke = false;
+    std::string clip_path; ///< the id of a clipPath, "" for none
+    std::string mask;      ///< the id of a mask, "" for none
+    BlendMode blend = BlendMode::Normal;
+    bool isolate = false;    ///< isolation: isolate
+    bool mask_alpha = false; ///< mask-type: alpha (on a mask element)
+    /// overflow: whether a viewport's content shows outside it. Initially
+    /// visible, but hidden on the elements that establish a viewport (svg,
+    /// symbol, marker, pattern, image) by the UA style sheet (SVG 2, appendix D).
+    std::optional<bool> overflow_visible;
 };
 
 /// Applies one property. Returns "" when applied or unknown, otherwise what is

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -34,7 +35,8 @@ struct Failure {
 // (a marker is drawn only through the marker properties).
 inline bool silently_skipped(std::string_view n) {
     return n == "title" || n == "desc" || n == "metadata" || n == "defs" || n == "linearGradient" ||
-           n == "radialGradient" || n == "stop" || n == "script" || n == "marker" || n == "style";
+           n == "radialGradient" || n == "stop" || n == "script" || n == "marker" || n == "style" ||
+           n == "clipPath" || n == "mask" || n == "pattern";
 }
 
 // SVG elements that change what a file shows and that this reader does not
@@ -42,8 +44,7 @@ inline bool silently_skipped(std::string_view n) {
 // through use) is unknown to SVG, and an unknown element is not rendered
 // (SVG 2, 5.9 "unknown elements"): no warning.
 inline bool unsupported(std::string_view n) {
-    static const std::set<std::string_view> names = {"image",   "text",   "clipPath",     "mask",
-                                                     "pattern", "filter", "foreignObject"};
+    static const std::set<std::string_view> names = {"text", "filter", "foreignObject"};
     return names.count(n) != 0;
 }
 
@@ -124,9 +125,9 @@ class Reader {
     void read_style_sheets(const pugi::xml_node& root);
     const std::vector<const CssDeclaration*>& matched(const pugi::xml_node& n);
     // Adds a group's children to `out`, or the group itself when it needs a
-    // layer (opacity below 1).
+    // layer (opacity, a clip, a mask, a blend mode, isolation).
     static void add_group(Group& out, Group g) {
-        if (g.opacity >= 1.0f)
+        if (!g.needs_layer())
             std::move(g.children.begin(), g.children.end(), std::back_inserter(out.children));
         else if (!g.children.empty())
             out.children.push_back(Node{std::move(g)});
@@ -136,7 +137,32 @@ class Reader {
     void use(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out,
              int depth);
     void nested_viewport(const pugi::xml_node& n, const pugi::xml_node& sizes,
-                         const StyleState& style, const Affine& m, Group& out, int depth);
+                         const StyleState& style, const ElementProps& props, const Affine& m,
+                         Group& out, int depth);
+    // clip-path, mask, mix-blend-mode, isolation (svg/clip_mask.cpp).
+    static bool has_effects(const ElementProps& p) {
+        return !p.clip_path.empty() || !p.mask.empty() || p.blend != BlendMode::Normal || p.isolate;
+    }
+    void apply_effects(const pugi::xml_node& n, const ElementProps& props, const Affine& m,
+                       Group& g, int depth);
+    // The user-space box of the element an effect applies to, computed on demand.
+    using BoxOf = std::function<const Rect&()>;
+    std::shared_ptr<const Mask> effect(const pugi::xml_node& n, const std::string& id, bool is_clip,
+                                       const Affine& m, const BoxOf& bbox, int depth);
+    std::shared_ptr<const Mask> clip_path(const pugi::xml_node& cp, const Affine& m,
+                                          const BoxOf& bbox, int depth);
+    std::shared_ptr<const Mask> mask(const pugi::xml_node& mk, const Affine& m, const BoxOf& bbox,
+                                     int depth);
+    // The box of what a group draws (its shapes' paths, strokes apart), in
+    // the coordinates `to_user` maps device space to.
+    static Rect user_bbox(const Group& g, const Affine& to_user);
+    // A clip to the rectangle r of the coordinates m maps to device space.
+    static std::shared_ptr<const Mask> rect_clip(const Rect& r, const Affine& m);
+    static bool fits(const Group& g, const Rect& r, const Affine& to_r);
+    // The clip of a viewport r (in the coordinates m maps to device space)
+    // around `content`; null when the content lies wholly inside.
+    static std::shared_ptr<const Mask> viewport_clip(const Group& content, const Rect& r,
+                                                     const Affine& m);
     std::size_t expanded_size(const pugi::xml_node& n, int depth);
     StyleState style_of(const pugi::xml_node& n, ElementProps& props);
     void to_host_space(Shape& s);
@@ -152,9 +178,23 @@ class Reader {
     struct ResolvedPaint {
         Rgba color;
         std::shared_ptr<const Gradient> gradient;
+        std::shared_ptr<const Pattern> pattern;
     };
+    // `path` is the painted shape's, for objectBoundingBox units.
     std::optional<ResolvedPaint> paint(const pugi::xml_node& n, const PaintSpec& spec,
-                                       const StyleState& style);
+                                       const StyleState& style, const Path& path);
+    // <image> (svg/images.cpp): a raster image's pixels or an SVG image's
+    // tree, with its own size; neither when it cannot be used.
+    struct ImageSource {
+        std::shared_ptr<const RasterImage> raster;
+        std::shared_ptr<const Group> svg;
+        double width = 0, height = 0;
+    };
+    const ImageSource& image_source(const pugi::xml_node& n, const std::string& href);
+    void image(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out);
+    // Patterns (svg/patterns.cpp): null when disabled (paints nothing).
+    std::shared_ptr<const Pattern> pattern(const pugi::xml_node& pat, const Path& path, int depth);
+    std::vector<pugi::xml_node> pattern_chain(const pugi::xml_node& pat);
     std::optional<double> non_negative(const pugi::xml_node& n, const char* attr,
                                        std::optional<double> v);
     Path geometry(const pugi::xml_node& n, std::string_view name, const LengthContext& ctx);
@@ -178,8 +218,12 @@ class Reader {
     std::unique_ptr<CssMatcher> matcher_; // none without style sheets
     pugi::xml_node matched_node_;         // the element matched_ is for
     std::vector<const CssDeclaration*> matched_;
-    bool quiet_ = false; // style_of re-reads ancestors: their problems were told  //
-                         // expanded_size's, per element
+    std::map<const void*, std::shared_ptr<const Pattern>> patterns_; // built without a box
+    std::map<std::string, ImageSource> images_;                      // by href
+    int depth_ = 0;          // the nesting depth of the shape being painted, for its patterns
+    bool clip_mode_ = false; // drawing a clipPath's content: opaque fills of shapes only
+    bool quiet_ = false;     // style_of re-reads ancestors: their problems were told  //
+                             // expanded_size's, per element
 };
 
 } // namespace casteljau::svg_detail

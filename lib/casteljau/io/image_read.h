@@ -1,0 +1,34 @@
+// Reading raster images (PNG, JPEG, GIF, WebP, TIFF) into premultiplied
+// float RasterImages, for SVG <image>: the I/O border, where a file's header
+// is checked against a pixel limit before any pixel is decoded and every
+// failure becomes an error message.
+#pragma once
+
+#include "casteljau/paint/raster_image.h"
+
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+
+namespace casteljau {
+
+/// A decoded image, or why there is none.
+struct ImageReadResult {
+    std::shared_ptr<const RasterImage> image; ///< null on error
+    std::string error;                        ///< empty on success
+};
+
+/// Decodes the image file at `path`. The format is found from the file's
+/// first bytes, not its name. Only the first frame or page is read;
+/// gray becomes RGB, a missing alpha is 1, and EXIF orientation is applied.
+/// Values stay sRGB-encoded, premultiplied. Images of more than
+/// `max_pixels` pixels (width * height, as the file declares them) are
+/// refused before their pixels are decoded. Errors start with the path.
+ImageReadResult read_image_file(const std::string& path, std::size_t max_pixels);
+
+/// The same for the bytes of an image file in memory (a data: URL's).
+/// Errors name no source: the caller knows where the bytes came from.
+ImageReadResult decode_image(std::span<const unsigned char> bytes, std::size_t max_pixels);
+
+} // namespace casteljau

@@ -1,0 +1,56 @@
+// ImageShader: a RasterImage as a paint (SVG <image>, and image patterns).
+//
+// `to_device` maps image pixel space, where pixel (i, j) covers
+// [i, i + 1] x [j, j + 1], to device pixels; the centre q = (x + 0.5, y + 0.5)
+// of device pixel (x, y) samples the image at p = to_device^-1 q:
+//   nearest  (image-rendering: optimizeSpeed, SVG 1.1 11.7; CSS Images 3
+//            pixelated): the pixel that contains p, (floor(p.x), floor(p.y));
+//   bilinear (the default, optimizeQuality): with pixel centres at integers,
+//            u = p.x - 0.5 = i + s and v = p.y - 0.5 = j + t (0 <= s, t < 1),
+//            (1 - t)((1 - s) P(i, j) + s P(i + 1, j))
+//              + t((1 - s) P(i, j + 1) + s P(i + 1, j + 1)),
+//            on premultiplied values, so that a transparent pixel's color
+//            does not bleed into its neighbours.
+// Outside the image, `repeat` tiles the plane (an index k becomes k mod W,
+// floor-mod, so the interpolation crosses the seam to the other edge); pad,
+// the alternative, extends the edge pixels (the point is clamped between the
+// first and last pixel centres). Coordinates are reduced in double before
+// they become indices, so huge or NaN coordinates still give a valid pixel.
+#pragma once
+
+#include "casteljau/geom/affine.h"
+#include "casteljau/paint/canvas.h"
+#include "casteljau/paint/color.h"
+#include "casteljau/paint/raster_image.h"
+#include "casteljau/raster/span.h"
+
+namespace casteljau {
+
+/// An image ready to shade device pixels: the device -> image map and the
+/// sampling options. The image must outlive the shader's use.
+class ImageShader {
+  public:
+    /// `to_device` maps image pixel space to device pixels. Samples by
+    /// bilinear interpolation when `smooth`, else the nearest pixel; tiles
+    /// the plane when `repeat`, else extends the edge pixels. False, and
+    /// nothing is painted, when the image is empty or the map singular.
+    bool prepare(const RasterImage& image, const Affine& to_device, float opacity, bool smooth,
+                 bool repeat);
+    /// The premultiplied color at the centre of device pixel (x, y), times the opacity.
+    Premul at(int x, int y) const;
+
+  private:
+    const RasterImage* image_ = nullptr;
+    Affine inverse_;               // device -> image pixel space
+    double inv_w_ = 1, inv_h_ = 1; // 1 / width, 1 / height: wrapping multiplies
+    float opacity_ = 1;
+    bool smooth_ = true, repeat_ = false;
+};
+
+/// Image compositing. Each pixel from at() itself, not from a point stepped
+/// along the row: the same value to the bit, where a stepped point, rounded
+/// differently, could land on the other side of a pixel edge.
+template <class Pixel>
+using ImageSpanPainter = ShadedSpanPainter<Pixel, ImageShader>;
+
+} // namespace casteljau

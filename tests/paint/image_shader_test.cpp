@@ -1,0 +1,292 @@
+// Image shading: exact pixels at pixel centres, nearest against bilinear
+// under scaling, tiling and edge extension, opacity, a rotated map against a
+// direct computation, coordinates far outside the double range of sense, and
+// span painting equal to at() pixel by pixel.
+#include "casteljau/paint/canvas.h"
+#include "casteljau/paint/image_shader.h"
+
+#include <climits>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace casteljau {
+namespace {
+
+RasterImage random_image(int w, int h, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> unit(0, 1);
+    RasterImage im;
+    im.width = w, im.height = h;
+    for (int i = 0; i < w * h; ++i) {
+        const float a = unit(rng);
+        im.pixels.push_back({unit(rng) * a, unit(rng) * a, unit(rng) * a, a});
+    }
+    return im;
+}
+
+bool same(const Premul& p, const Premul& q) {
+    return p.r == q.r && p.g == q.g && p.b == q.b && p.a == q.a;
+}
+
+// Streamed, not "(" + std::to_string(...): GCC 12 at -O3 warns (-Wrestrict)
+// about a false overlap in that operator+.
+std::string str(const Premul& p) {
+    std::ostringstream s;
+    s << "(" << p.r << ", " << p.g << ", " << p.b << ", " << p.a << ")";
+    return s.str();
+}
+
+std::string where(int x, int y) {
+    std::ostringstream s;
+    s << "(" << x << ", " << y << ")";
+    return s.str();
+}
+
+void expect_near(const Premul& p, const Premul& q, float tol, const std::string& what) {
+    EXPECT_NEAR(p.r, q.r, tol) << what;
+    EXPECT_NEAR(p.g, q.g, tol) << what;
+    EXPECT_NEAR(p.b, q.b, tol) << what;
+    EXPECT_NEAR(p.a, q.a, tol) << what;
+}
+
+Premul mix(const Premul& a, const Premul& b, double t) {
+    const auto m = [&](float x, float y) { return float((1 - t) * x + t * y); };
+    return {m(a.r, b.r), m(a.g, b.g), m(a.b, b.b), m(a.a, b.a)};
+}
+
+/// The four combinations of smooth and repeat.
+constexpr bool kModes[4][2] = {{false, false}, {false, true}, {true, false}, {true, true}};
+
+TEST(ImageShader, RefusesEmptyImagesAndSingularMaps) {
+    const RasterImage im = random_image(2, 2, 1);
+    ImageShader sh;
+    EXPECT_FALSE(sh.prepare(RasterImage{}, Affine::identity(), 1, true, false));
+    EXPECT_FALSE(sh.prepare(im, Affine::scale(0, 1), 1, true, false));
+    EXPECT_FALSE(sh.prepare(im, {1, 2, 2, 4, 0, 0}, 1, true, false));
+    EXPECT_FALSE(sh.prepare(im, {1, 0, 0, 1, NAN, 0}, 1, true, false));
+    EXPECT_FALSE(sh.prepare(im, {1e200, 0, 0, 1e200, 0, 0}, 1, true, false)); // det = inf
+    EXPECT_TRUE(sh.prepare(im, Affine::identity(), 1, true, false));
+}
+
+TEST(ImageShader, IdentityGivesExactPixelsAtCentres) {
+    const RasterImage im = random_image(5, 4, 2);
+    for (const auto& [smooth, repeat] : kModes) {
+        ImageShader sh;
+        ASSERT_TRUE(sh.prepare(im, Affine::identity(), 1, smooth, repeat));
+        for (int y = 0; y < im.height; ++y)
+            for (int x = 0; x < im.width; ++x)
+                EXPECT_TRUE(same(sh.at(x, y), im.at(x, y)))
+                    << smooth << repeat << " (" << x << ", " << y << ") " << str(sh.at(x, y));
+    }
+}
+
+TEST(ImageShader, NearestAndBilinearOnATwoByTwoImageScaledByFour) {
+    RasterImage im;
+    im.width = im.height = 2;
+    im.pixels = {{1, 0, 0, 1}, {0, 1, 0, 1}, {0, 0, 0.5f, 0.5f}, {0, 0, 0, 0}};
+    ImageShader nearest, pad, tile;
+    ASSERT_TRUE(nearest.prepare(im, Affine::scale(4), 1, false, false));
+    ASSERT_TRUE(pad.prepare(im, Affine::scale(4), 1, true, false));
+    ASSERT_TRUE(tile.prepare(im, Affine::scale(4), 1, true, true));
+    // Device centre x + 0.5 is image point (x + 0.5) / 4; between centres
+    // u = (x + 0.5) / 4 - 0.5: -0.375, -0.125, 0.125, ... 1.375 for x = 0..7.
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            const std::string at = where(x, y);
+            EXPECT_TRUE(same(nearest.at(x, y), im.at(x / 4, y / 4))) << at;
+            const double u = (x + 0.5) / 4 - 0.5, v = (y + 0.5) / 4 - 0.5;
+            // Pad: clamped between the centres.
+            const double cu = std::clamp(u, 0.0, 1.0), cv = std::clamp(v, 0.0, 1.0);
+            const Premul want_pad =
+                mix(mix(im.at(0, 0), im.at(1, 0), cu), mix(im.at(0, 1), im.at(1, 1), cu), cv);
+            expect_near(pad.at(x, y), want_pad, 1e-6f, "pad " + at);
+            // Repeat: u = -0.375 lies between pixel 1 (of the tile to the
+            // left) and pixel 0, 0.625 of the way to pixel 0.
+            const double wu = u < 0 ? -u : u > 1 ? 2 - u : u; // weight of pixel 1
+            const double wv = v < 0 ? -v : v > 1 ? 2 - v : v;
+            const Premul want_tile =
+                mix(mix(im.at(0, 0), im.at(1, 0), wu), mix(im.at(0, 1), im.at(1, 1), wu), wv);
+            expect_near(tile.at(x, y), want_tile, 1e-6f, "repeat " + at);
+        }
+    // Spot values: 0.375 of the way from red to green; and at the corner
+    // seam, weights 0.625 and 0.375 on each axis.
+    expect_near(pad.at(3, 0), {0.625f, 0.375f, 0, 1}, 1e-6f, "pad (3, 0)");
+    expect_near(tile.at(0, 0), {0.390625f, 0.234375f, 0.1171875f, 0.7421875f}, 1e-6f,
+                "repeat (0, 0)");
+    expect_near(pad.at(0, 0), im.at(0, 0), 0, "pad corner");
+}
+
+TEST(ImageShader, RepeatTilesThePlane) {
+    const RasterImage im = random_image(3, 5, 3);
+    std::mt19937 rng(4);
+    std::uniform_int_distribution<int> k(-1000, 1000), px(0, 40);
+    for (const bool smooth : {false, true}) {
+        ImageShader sh;
+        ASSERT_TRUE(sh.prepare(im, Affine::scale(2), 1, smooth, true)); // period 6 x 10
+        for (int trial = 0; trial < 500; ++trial) {
+            const int x = px(rng), y = px(rng), kx = k(rng), ky = k(rng);
+            EXPECT_TRUE(same(sh.at(x + 6 * kx, y + 10 * ky), sh.at(x, y)))
+                << smooth << " (" << x << ", " << y << ") + (" << kx << ", " << ky << ") periods";
+        }
+    }
+}
+
+// Wrapping multiplies by the reciprocal of the width, and the quotient can
+// round across an integer: 15^- x (1/5) gives 3, 49 x (1/49) gives
+// 0.99999... The point must still wrap to the right pixel: the last one of
+// the tile just below its end, the first one at its end.
+TEST(ImageShader, RepeatWrapsRightWhereTheQuotientRounds) {
+    struct Case {
+        int width;
+        double x;  // image point, at device pixel (0, 0)'s centre
+        int pixel; // the column it lies in
+    };
+    for (const Case& c : {Case{5, std::nextafter(15.0, 0.0), 4}, Case{49, 49.0, 0}}) {
+        const RasterImage im = random_image(c.width, 2, 10);
+        ImageShader sh;
+        ASSERT_TRUE(sh.prepare(im, Affine::translate({-(c.x - 0.5), 0}), 1, false, true));
+        EXPECT_TRUE(same(sh.at(0, 0), im.at(c.pixel, 0))) << c.width;
+    }
+}
+
+TEST(ImageShader, PadExtendsTheEdgePixels) {
+    const RasterImage im = random_image(4, 3, 5);
+    for (const bool smooth : {false, true}) {
+        ImageShader sh;
+        ASSERT_TRUE(sh.prepare(im, Affine::identity(), 1, smooth, false));
+        for (int y = 0; y < im.height; ++y)
+            for (int d : {1, 2, 17, 100000}) {
+                EXPECT_TRUE(same(sh.at(-d, y), im.at(0, y))) << smooth << " left " << d;
+                EXPECT_TRUE(same(sh.at(im.width - 1 + d, y), im.at(im.width - 1, y)))
+                    << smooth << " right " << d;
+            }
+        for (int x = 0; x < im.width; ++x) {
+            EXPECT_TRUE(same(sh.at(x, -9), im.at(x, 0))) << smooth;
+            EXPECT_TRUE(same(sh.at(x, im.height + 9), im.at(x, im.height - 1))) << smooth;
+        }
+        EXPECT_TRUE(same(sh.at(-5, -5), im.at(0, 0))) << smooth;
+        EXPECT_TRUE(same(sh.at(50, 50), im.at(im.width - 1, im.height - 1))) << smooth;
+    }
+}
+
+TEST(ImageShader, OpacityScalesEveryChannel) {
+    const RasterImage im = random_image(3, 3, 6);
+    const Affine m = Affine::translate({0.3, -0.2}) * Affine::scale(1.7);
+    for (const auto& [smooth, repeat] : kModes) {
+        ImageShader full, part;
+        ASSERT_TRUE(full.prepare(im, m, 1, smooth, repeat));
+        ASSERT_TRUE(part.prepare(im, m, 0.3f, smooth, repeat));
+        for (int y = -2; y < 7; ++y)
+            for (int x = -2; x < 7; ++x) {
+                const Premul f = full.at(x, y), p = part.at(x, y);
+                EXPECT_FLOAT_EQ(p.r, f.r * 0.3f);
+                EXPECT_FLOAT_EQ(p.g, f.g * 0.3f);
+                EXPECT_FLOAT_EQ(p.b, f.b * 0.3f);
+                EXPECT_FLOAT_EQ(p.a, f.a * 0.3f);
+            }
+    }
+}
+
+/// Bilinear or nearest sampling, padded, computed directly from the formulas.
+Premul reference(const RasterImage& im, double px, double py, bool smooth) {
+    if (!smooth) {
+        const int i = std::clamp(int(std::floor(px)), 0, im.width - 1);
+        const int j = std::clamp(int(std::floor(py)), 0, im.height - 1);
+        return im.at(i, j);
+    }
+    const double u = std::clamp(px - 0.5, 0.0, im.width - 1.0);
+    const double v = std::clamp(py - 0.5, 0.0, im.height - 1.0);
+    const int i = int(u), j = int(v);
+    const int i1 = std::min(i + 1, im.width - 1), j1 = std::min(j + 1, im.height - 1);
+    return mix(mix(im.at(i, j), im.at(i1, j), u - i), mix(im.at(i, j1), im.at(i1, j1), u - i),
+               v - j);
+}
+
+TEST(ImageShader, RotatedMapMatchesADirectComputation) {
+    const RasterImage im = random_image(7, 5, 7);
+    const double angle = 0.4, sx = 2.5, sy = 1.5, tx = 10.3, ty = 4.7;
+    const Affine m = Affine::translate({tx, ty}) * Affine::rotate(angle) * Affine::scale(sx, sy);
+    for (const bool smooth : {false, true}) {
+        ImageShader sh;
+        ASSERT_TRUE(sh.prepare(im, m, 1, smooth, false));
+        for (int y = -3; y < 25; ++y)
+            for (int x = -3; x < 25; ++x) {
+                // Undo the translation, the rotation and the scale, in turn.
+                const double dx = x + 0.5 - tx, dy = y + 0.5 - ty;
+                const double rx = std::cos(angle) * dx + std::sin(angle) * dy;
+                const double ry = -std::sin(angle) * dx + std::cos(angle) * dy;
+                const double px = rx / sx, py = ry / sy;
+                // Nearest: a point within rounding of a pixel edge may go either way.
+                const double edge = 1e-9;
+                if (!smooth && (std::fabs(px - std::round(px)) < edge ||
+                                std::fabs(py - std::round(py)) < edge))
+                    continue;
+                expect_near(sh.at(x, y), reference(im, px, py, smooth), smooth ? 1e-5f : 0,
+                            (smooth ? "bilinear " : "nearest ") + where(x, y));
+            }
+    }
+}
+
+bool in_unit_range(const Premul& p) {
+    const auto ok = [](float v) { return v >= 0 && v <= 1; };
+    return ok(p.r) && ok(p.g) && ok(p.b) && ok(p.a);
+}
+
+TEST(ImageShader, HugeAndNonFiniteCoordinatesGiveValidPixels) {
+    const RasterImage im = random_image(3, 2, 8);
+    const Affine maps[] = {
+        Affine::translate({1e300, -1e300}),
+        Affine::translate({-1.7e308, 1.7e308}),
+        {1e-5, 0, 0, 1e-5, 1e300, 0},      // inverse translation -1e305
+        {1e-5, 0, 0, 1e-5, 1e305, -1e305}, // inverse translation overflows to inf
+        Affine::rotate(1) * Affine::scale(1e-5) * Affine::translate({1e303, 1e303}),
+    };
+    const int coords[] = {0, 1, -1, INT_MAX, INT_MIN, INT_MAX / 3};
+    for (const Affine& m : maps)
+        for (const auto& [smooth, repeat] : kModes) {
+            ImageShader sh;
+            if (!sh.prepare(im, m, 1, smooth, repeat)) continue;
+            for (int x : coords)
+                for (int y : coords) EXPECT_TRUE(in_unit_range(sh.at(x, y))) << m.e << " " << x;
+        }
+}
+
+template <class Pixel>
+void check_span_painting() {
+    const RasterImage im = random_image(6, 4, 9);
+    ImageShader sh;
+    ASSERT_TRUE(
+        sh.prepare(im, Affine::translate({2.25, 1.5}) * Affine::rotate(0.3) * Affine::scale(1.9),
+                   0.8f, true, true));
+    // A canvas placed at (3, 2) of the frame, over a background color.
+    const Premul bg{0.1f, 0.2f, 0.05f, 0.4f};
+    BasicCanvas<Pixel> canvas(20, 6, 3, 2), expected(20, 6, 3, 2);
+    canvas.fill(bg);
+    expected.fill(bg);
+    ImageSpanPainter<Pixel> painter(canvas, sh);
+    std::vector<float> coverage(12);
+    for (std::size_t i = 0; i < coverage.size(); ++i) coverage[i] = float(i) / 11;
+    const Span spans[] = {
+        {2, 4, 12, coverage.data(), 0}, {3, 3, 20, nullptr, 1.0f}, {5, 10, 7, nullptr, 0.5f}};
+    for (const Span& s : spans) {
+        painter.span(s);
+        Pixel* row = expected.row(s.y - 2);
+        for (int i = 0; i < s.len; ++i) blend_over(row[s.x + i - 3], sh.at(s.x + i, s.y), s.at(i));
+    }
+    for (int y = 0; y < 6; ++y)
+        for (int x = 0; x < 20; ++x)
+            EXPECT_TRUE(same(to_premul(canvas.row(y)[x]), to_premul(expected.row(y)[x])))
+                << "(" << x << ", " << y << ")";
+}
+
+TEST(ImageShader, SpanPaintingEqualsAtPerPixel) {
+    check_span_painting<Premul>();
+    check_span_painting<Premul8>();
+}
+
+} // namespace
+} // namespace casteljau
