@@ -250,5 +250,27 @@ TEST(TransformOrigin, TheTransformIsAppliedAboutIt) {
     expect_box(*s[2], {-200, -200, -180, -180}, "about the viewport's corner");
 }
 
+TEST(ContextPaint, MarkersTakeTheirShapesPaintsAndUsesTheirOwn) {
+    // SVG 2, 13.3: in a marker, the shape it is on; under a use, the use.
+    const SvgResult r = read(R"svg(<defs>
+          <marker id="m" markerWidth="4" markerHeight="4" markerUnits="userSpaceOnUse">
+            <rect width="4" height="4" fill="context-stroke" stroke="context-fill"/></marker>
+          <rect id="r" width="5" height="5" fill="context-fill" stroke="context-stroke"/></defs>
+        <path d="M10 10 H50" fill="blue" stroke="red" marker-end="url(#m)"/>
+        <use href="#r" fill="lime" stroke="yellow"/>
+        <rect width="5" height="5" fill="context-fill" stroke="context-stroke"/>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    EXPECT_TRUE(r.warnings.empty());
+    const auto s = shapes(*r.scene);
+    ASSERT_EQ(s.size(), 4u);
+    EXPECT_FALSE(s[3]->fill || s[3]->stroke) << "no context element: none";
+    ASSERT_TRUE(s[1]->fill && s[1]->stroke);
+    EXPECT_EQ(s[1]->fill->color, (Rgba{1, 0, 0, 1})) << "the marker's fill: the path's stroke";
+    EXPECT_EQ(s[1]->stroke->color, (Rgba{0, 0, 1, 1}));
+    ASSERT_TRUE(s[2]->fill && s[2]->stroke);
+    EXPECT_EQ(s[2]->fill->color, (Rgba{0, 1, 0, 1})) << "the use's fill";
+    EXPECT_EQ(s[2]->stroke->color, (Rgba{1, 1, 0, 1}));
+}
+
 } // namespace
 } // namespace casteljau

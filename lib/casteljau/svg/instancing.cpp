@@ -38,6 +38,11 @@ void Reader::use(const pugi::xml_node& n, const StyleState& style, const Affine&
     const std::string_view kind = target.name();
     if (clip_mode_ && !is_shape(kind)) return; // a clip path's use must name a shape
     instancing_.push_back(target);
+    // The use is the context element of what it draws (SVG 2, 13.3); a
+    // gradient or pattern it is painted with has no box of its own, and
+    // takes the unit square's.
+    context_.push_back(
+        {paint(n, style.fill, style, unit_square_), paint(n, style.stroke, style, unit_square_)});
     if (kind == "symbol" || kind == "svg") {
         if (conditions_hold(target)) {
             StyleState inner = style;
@@ -54,6 +59,7 @@ void Reader::use(const pugi::xml_node& n, const StyleState& style, const Affine&
     } else {
         element(target, style, moved, out, depth + 1);
     }
+    context_.pop_back();
     instancing_.pop_back();
 }
 
@@ -276,7 +282,14 @@ void Reader::marker(const pugi::xml_node& mk, const MarkerVertex& v, const Shape
                         Affine::translate(Point{0, 0} - view * ref);
     Group g{props.opacity, {}};
     instancing_.push_back(mk);
+    // The shape is the context element of its markers (SVG 2, 13.3).
+    const auto context_of = [](const auto& p) -> std::optional<ResolvedPaint> {
+        if (!p) return std::nullopt;
+        return ResolvedPaint{p->color, p->gradient, p->pattern};
+    };
+    context_.push_back({context_of(s.fill), context_of(s.stroke)});
     walk(mk, style, port * view, g, depth + 1);
+    context_.pop_back();
     instancing_.pop_back();
     if (!props.overflow_visible.value_or(false)) g.clip = viewport_clip(g, {0, 0, *w, *h}, port);
     add_group(out, std::move(g));

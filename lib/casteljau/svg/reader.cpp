@@ -394,6 +394,12 @@ void Reader::to_host_space(Shape& s) {
 
 std::optional<Reader::ResolvedPaint> Reader::paint(const pugi::xml_node& n, const PaintSpec& spec,
                                                    const StyleState& style, const Path& path) {
+    if (spec.kind == PaintSpec::Kind::ContextFill || spec.kind == PaintSpec::Kind::ContextStroke) {
+        // Outside a marker or a use there is no context element: none.
+        if (context_.empty()) return std::nullopt;
+        return spec.kind == PaintSpec::Kind::ContextFill ? context_.back().fill
+                                                         : context_.back().stroke;
+    }
     if (spec.from_url) {
         if (const pugi::xml_node p = by_id(spec.url); p && std::strcmp(p.name(), "pattern") == 0) {
             if (std::find(instancing_.begin(), instancing_.end(), p) != instancing_.end()) {

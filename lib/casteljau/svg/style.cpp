@@ -32,6 +32,8 @@ std::optional<PaintSpec> parse_paint(std::string_view v) {
     v = trim(v);
     if (v == "none") return PaintSpec{PaintSpec::Kind::None, {}, false, {}};
     if (iequals(v, "currentColor")) return PaintSpec{PaintSpec::Kind::CurrentColor, {}, false, {}};
+    if (v == "context-fill") return PaintSpec{PaintSpec::Kind::ContextFill, {}, false, {}};
+    if (v == "context-stroke") return PaintSpec{PaintSpec::Kind::ContextStroke, {}, false, {}};
     if (v.rfind("url(", 0) == 0) {
         const std::size_t close = v.find(')');
         if (close == v.npos) return std::nullopt;
@@ -264,6 +266,8 @@ std::optional<Vec2> parse_transform_origin(std::string_view v, const LengthConte
 std::optional<Rgba> resolve_paint(const PaintSpec& p, const StyleState& s) {
     switch (p.kind) {
     case PaintSpec::Kind::None:
+    case PaintSpec::Kind::ContextFill: // the reader's: it knows the context element
+    case PaintSpec::Kind::ContextStroke:
         return std::nullopt;
     case PaintSpec::Kind::Color:
         return p.color;
@@ -286,7 +290,8 @@ std::string apply_property(std::string_view name, std::string_view value, const 
         target = *parsed;
         return "";
     };
-    constexpr const char* kPaint = "a paint (none, a color, currentColor or url(#id))";
+    constexpr const char* kPaint =
+        "a paint (none, a color, currentColor, context-fill, context-stroke or url(#id))";
     StrokeGeometry& g = s.stroke_geometry;
     const StrokeGeometry& pg = parent.stroke_geometry;
     if (name == "fill") return set(s.fill, parent.fill, parse_paint(value), kPaint);

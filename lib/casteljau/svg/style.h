@@ -32,10 +32,12 @@
 
 namespace casteljau {
 
-/// A fill or stroke paint as specified: none, a color, currentColor or a url.
+/// A fill or stroke paint as specified: none, a color, currentColor,
+/// context-fill, context-stroke or a url.
 struct PaintSpec {
-    /// No paint, a color, or currentColor.
-    enum class Kind { None, Color, CurrentColor } kind = Kind::None;
+    /// No paint, a color, currentColor, or the context element's fill or
+    /// stroke (SVG 2, 13.3: the shape a marker is on, the use that instances).
+    enum class Kind { None, Color, CurrentColor, ContextFill, ContextStroke } kind = Kind::None;
     Rgba color;
     bool from_url = false; ///< url(\#id), with `color`/`kind` as its fallback
     std::string url;       ///< the id after '#', when from_url

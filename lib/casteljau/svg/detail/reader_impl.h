@@ -10,6 +10,7 @@
 #include "casteljau/svg/detail/gradients.h"
 #include "casteljau/svg/marker_vertices.h"
 #include "casteljau/svg/reader.h"
+#include "casteljau/svg/shapes.h"
 #include "casteljau/svg/style.h"
 #include "casteljau/svg/viewport.h"
 
@@ -220,6 +221,13 @@ class Reader {
     std::vector<const CssDeclaration*> matched_;
     std::map<const void*, std::shared_ptr<const Pattern>> patterns_; // built without a box
     std::map<std::string, ImageSource> images_;                      // by href
+    // The paints context-fill and context-stroke take: the shape's whose
+    // markers, or the use's whose target, is being drawn (innermost last).
+    struct ContextPaints {
+        std::optional<ResolvedPaint> fill, stroke;
+    };
+    std::vector<ContextPaints> context_;
+    Path unit_square_ = rect_path(0, 0, 1, 1, 0, 0); // a use's box, for its context paints
     int depth_ = 0;          // the nesting depth of the shape being painted, for its patterns
     bool clip_mode_ = false; // drawing a clipPath's content: opaque fills of shapes only
     bool quiet_ = false;     // style_of re-reads ancestors: their problems were told  //
