@@ -92,6 +92,9 @@ void Renderer::begin(const Affine& view, const RenderOptions& options, const Pix
     options_ = &options;
     stats_ = {};
     tile_of_ = nullptr; // a new scene may hold another pattern at the same address
+    layers_used_ = 0;
+    layer_bytes_ = 0;
+    layer_sizes_.clear();
 }
 
 Rect Renderer::reach_box(const Shape& s, const Affine& view) {
@@ -114,10 +117,22 @@ Rect Renderer::group_reach_box(const Group& g, const Affine& view) {
 }
 
 template <class Target>
-Target& Renderer::acquire_layer() {
+Target* Renderer::acquire_layer(int w, int h, int x0, int y0) {
+    const std::size_t bytes = std::size_t(w) * std::size_t(h) * sizeof(typename Target::pixel_type);
+    if (layer_bytes_ + bytes > kMaxLayerBytes) return nullptr;
     auto& layers = std::get<std::vector<std::unique_ptr<Target>>>(layers_);
     if (int(layers.size()) <= layers_used_) layers.push_back(std::make_unique<Target>());
-    return *layers[std::size_t(layers_used_++)];
+    Target& l = *layers[std::size_t(layers_used_++)];
+    l.reset(w, h, x0, y0);
+    layer_bytes_ += bytes;
+    layer_sizes_.push_back(bytes);
+    return &l;
+}
+
+void Renderer::release_layer() {
+    --layers_used_;
+    layer_bytes_ -= layer_sizes_.back();
+    layer_sizes_.pop_back();
 }
 
 template <class Target>
@@ -149,6 +164,7 @@ void Renderer::draw_group(const Group& g, Target& target) {
     }
     in_layer(group_reach_box(g, view_), target, g.opacity, g.blend, [&](Target& l) {
         draw_children(g, l);
+        if (&l == &target) return; // over the layer budget: drawn straight, unclipped
         if (g.clip) mask_layer(*g.clip, l);
         if (g.mask) mask_layer(*g.mask, l);
     });
@@ -156,11 +172,12 @@ void Renderer::draw_group(const Group& g, Target& target) {
 
 template <class Target>
 void Renderer::mask_layer(const Mask& mask, Target& layer) {
-    Target& m = acquire_layer<Target>();
-    m.reset(layer.width(), layer.height(), layer.origin_x(), layer.origin_y());
-    draw_group(mask.content, m);
+    Target* m =
+        acquire_layer<Target>(layer.width(), layer.height(), layer.origin_x(), layer.origin_y());
+    if (!m) return; // over the layer budget: the layer stays unmasked
+    draw_group(mask.content, *m);
     const auto t = stage_start(*options_);
-    apply_mask(layer, m, mask.kind);
+    apply_mask(layer, *m, mask.kind);
     add_stage_ms(stats_.raster_ms, *options_, t);
     release_layer();
 }
@@ -179,11 +196,14 @@ void Renderer::in_layer(const Rect& b, Target& target, float opacity, BlendMode 
     const int x0 = floor_in(b.x0 - 1, tx0, tx1), y0 = floor_in(b.y0 - 1, ty0, ty1);
     const int x1 = ceil_in(b.x1 + 1, tx0, tx1), y1 = ceil_in(b.y1 + 1, ty0, ty1);
     if (x1 <= x0 || y1 <= y0) return;
-    Target& l = acquire_layer<Target>();
-    l.reset(x1 - x0, y1 - y0, x0, y0);
-    draw(l);
+    Target* l = acquire_layer<Target>(x1 - x0, y1 - y0, x0, y0);
+    if (!l) { // over the layer budget: drawn straight onto the target
+        draw(target);
+        return;
+    }
+    draw(*l);
     const auto t = stage_start(*options_);
-    composite_layer(target, l, opacity, blend);
+    composite_layer(target, *l, opacity, blend);
     add_stage_ms(stats_.raster_ms, *options_, t);
     release_layer();
 }

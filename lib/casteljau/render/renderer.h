@@ -11,9 +11,11 @@
 // state a frame allocates nothing new.
 //
 // Layer memory: one layer per group, clip or mask in flight, each at most
-// the target's size; what is in flight at once is bounded by the scene's
-// nesting depth (the SVG reader's max_depth). Pattern tiles are at most
-// kMaxTilePixels each, one per pattern nesting level.
+// the target's size, and at most kMaxLayerBytes in flight at once: a group
+// nested deeper than that allows is drawn straight onto what is under it,
+// its opacity, clip, mask and blend mode left out (a degraded picture, not
+// an unbounded one). Pattern tiles are at most kMaxTilePixels each, one per
+// pattern nesting level.
 #pragma once
 
 #include "casteljau/flatten/path_flatten.h"
@@ -25,6 +27,7 @@
 #include "casteljau/scene/scene.h"
 #include "casteljau/stroke/stroker.h"
 
+#include <cstddef>
 #include <memory>
 #include <span>
 #include <tuple>
@@ -40,6 +43,11 @@ inline constexpr int kStrokeStripRows = 128;
 /// The most pixels a pattern tile is drawn into (16 MiB of float pixels):
 /// a larger tile at device resolution is drawn at a lower one.
 inline constexpr long kMaxTilePixels = 1L << 20;
+
+/// The most bytes of layers in flight at once (groups, clips, masks), per
+/// renderer: 512 MiB, sixteen 2048 x 1024 float layers, or a float band of
+/// a 16384 px wide frame (kBandRows rows, 32 MiB) sixteen deep.
+inline constexpr std::size_t kMaxLayerBytes = std::size_t(512) << 20;
 
 /// How to render: flattening, antialiasing, statistics, gradient interpolation.
 struct RenderOptions {
@@ -124,10 +132,12 @@ class Renderer {
     /// Sets image_shader_ to paint `p` mapped to device space by `m` (the
     /// shape's user space to device); false when it paints nothing.
     bool prepare_pattern(const Pattern& p, const Affine& m, float opacity);
-    /// A free layer in the target's pixel format; release it in reverse order.
+    /// A free layer in the target's pixel format, reset to w x h at (x0, y0);
+    /// null when it would take the layers in flight over kMaxLayerBytes.
+    /// Release in reverse order.
     template <class Target>
-    Target& acquire_layer();
-    void release_layer() { --layers_used_; }
+    Target* acquire_layer(int w, int h, int x0, int y0);
+    void release_layer();
 
     EdgeList edges_;
     Rasterizer raster_;
@@ -137,7 +147,9 @@ class Renderer {
     /// Layers in flight, a stack, per pixel format; the first layers_used_ are taken.
     std::tuple<std::vector<std::unique_ptr<Canvas>>, std::vector<std::unique_ptr<Canvas8>>> layers_;
     int layers_used_ = 0;
-    ImageShader image_shader_; ///< images and pattern tiles
+    std::size_t layer_bytes_ = 0;          ///< the pixels of the layers in flight
+    std::vector<std::size_t> layer_sizes_; ///< each one's, a stack
+    ImageShader image_shader_;             ///< images and pattern tiles
     /// A pattern's tile: drawn by a renderer of its own, kept while the
     /// same pattern is painted under the same map (the strips of a stroke,
     /// the shapes of a band).
