@@ -5,10 +5,12 @@
 #include "casteljau/svg/transform_list.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <optional>
 #include <set>
+#include <string_view>
 #include <vector>
 
 namespace casteljau::svg_detail {
@@ -26,28 +28,38 @@ const char* href_of(const pugi::xml_node& n) {
     return nullptr;
 }
 
-// The value of a declaration in a style attribute, or "".
-std::string style_value(const pugi::xml_node& n, const char* property) {
-    const std::string css = n.attribute("style").value();
-    const std::string key = property;
-    std::size_t at = 0;
-    while ((at = css.find(key, at)) != std::string::npos) {
-        const std::size_t colon = css.find_first_not_of(" \t", at + key.size());
-        const bool starts = at == 0 || css[at - 1] == ';' || css[at - 1] == ' ';
-        if (starts && colon != std::string::npos && css[colon] == ':') {
-            const std::size_t end = css.find(';', colon);
-            return css.substr(colon + 1,
-                              end == std::string::npos ? std::string::npos : end - colon - 1);
-        }
-        at += key.size();
-    }
-    return "";
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+    return s;
+}
+
+// CSS keywords are ASCII case-insensitive.
+bool is_keyword(std::string_view v, std::string_view keyword) {
+    return v.size() == keyword.size() &&
+           std::equal(v.begin(), v.end(), keyword.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+// An opacity: a number or a percentage, clamped to [0, 1].
+std::optional<double> parse_alpha(std::string_view v) {
+    std::string_view rest;
+    std::optional<double> n = parse_number(v, &rest);
+    if (!n) return std::nullopt;
+    if (rest == "%")
+        *n /= 100;
+    else if (!trim(rest).empty())
+        return std::nullopt;
+    return std::clamp(*n, 0.0, 1.0);
 }
 
 } // namespace
 
-GradientIndex::GradientIndex(const pugi::xml_node& root, double viewport_w, double viewport_h)
-    : vw_(viewport_w), vh_(viewport_h) {
+GradientIndex::GradientIndex(const pugi::xml_node& root, double viewport_w, double viewport_h,
+                             GradientStyle style)
+    : style_(std::move(style)), vw_(viewport_w), vh_(viewport_h) {
     // Depth-first over the whole document, first definition of an id wins.
     struct Walker : pugi::xml_tree_walker {
         std::map<std::string, pugi::xml_node>* map;
@@ -172,26 +184,55 @@ GradientRef GradientIndex::build(pugi::xml_node node) {
     return r;
 }
 
+std::optional<GradientIndex::Specified> GradientIndex::specified(const pugi::xml_node& s,
+                                                                 const char* property,
+                                                                 bool (*valid)(std::string_view),
+                                                                 const char* expected,
+                                                                 const char* initial) {
+    std::vector<GradientProblem> invalid; // told once the outcome is known
+    std::optional<Specified> found;
+    for (pugi::xml_node e = s; !found && e.type() == pugi::node_element; e = e.parent()) {
+        const std::vector<std::string> values = style_.declarations(e, property);
+        bool inherit = false;
+        for (auto it = values.rbegin(); it != values.rend() && !found && !inherit; ++it) {
+            const std::string_view v = trim(*it);
+            if (is_keyword(v, "inherit"))
+                inherit = true;
+            else if (valid(v))
+                found = Specified{std::string(v), e};
+            else
+                invalid.push_back({e, std::string(property) + ": '" + std::string(v) + "' is not " +
+                                          expected + "; "});
+        }
+        if (!inherit) break; // not inherited: the initial value
+    }
+    for (GradientProblem& p : invalid) {
+        p.message += found ? "ignored" : initial;
+        problems_.push_back(std::move(p));
+    }
+    return found;
+}
+
 // One <stop>: an invalid offset is 0, an invalid stop-color black and an
 // invalid stop-opacity 1 (their initial values).
 GradientStop GradientIndex::stop(const pugi::xml_node& s, const std::vector<GradientStop>& before) {
-    const auto problem = [&](std::string what) { problems_.push_back({s, std::move(what)}); };
     GradientStop stop;
     const std::string off = s.attribute("offset").value();
     const auto v = parse_length(off.empty() ? "0" : off, 1.0);
-    if (!v) problem("offset: '" + off + "' is not a number; 0 is used");
+    if (!v) problems_.push_back({s, "offset: '" + off + "' is not a number; 0 is used"});
     stop.offset = float(std::clamp(v.value_or(0), 0.0, 1.0));
     if (!before.empty()) stop.offset = std::max(stop.offset, before.back().offset);
-    std::string color = style_value(s, "stop-color");
-    if (color.empty()) color = s.attribute("stop-color").as_string("black");
-    std::string opacity = style_value(s, "stop-opacity");
-    if (opacity.empty()) opacity = s.attribute("stop-opacity").as_string("1");
-    const auto c = parse_color(color);
-    if (!c) problem("stop-color: '" + color + "' is not a color; black is used");
-    const auto o = parse_length(opacity, 1.0); // 50% is 0.5
-    if (!o) problem("stop-opacity: '" + opacity + "' is not a number; 1 is used");
-    stop.color = c.value_or(Rgba{0, 0, 0, 1});
-    stop.color.a *= float(std::clamp(o.value_or(1), 0.0, 1.0));
+    stop.color = {0, 0, 0, 1};
+    const auto is_color = [](std::string_view v) {
+        return is_keyword(v, "currentColor") || parse_color(v).has_value();
+    };
+    if (const auto color = specified(s, "stop-color", is_color, "a color", "black is used"))
+        stop.color = is_keyword(color->value, "currentColor")
+                         ? style_.current_color(s) // the stop's, even when inherited as the keyword
+                         : *parse_color(color->value);
+    const auto is_alpha = [](std::string_view v) { return parse_alpha(v).has_value(); };
+    if (const auto opacity = specified(s, "stop-opacity", is_alpha, "a number", "1 is used"))
+        stop.color.a *= float(*parse_alpha(opacity->value));
     return stop;
 }
 

@@ -67,7 +67,7 @@ const Reader::ImageSource& Reader::image_source(const pugi::xml_node& n, const s
     if (const auto it = images_.find(href); it != images_.end()) return it->second;
     ImageSource& src = images_[href];
     SvgOptions nested = options_;
-    nested.max_image_nesting = options_.max_image_nesting - 1;
+    ++nested.image_depth;
     const auto svg_from = [&](SvgResult doc) {
         for (SvgDiagnostic& w : doc.warnings)
             if (!quiet_) warnings_.push_back(std::move(w));
@@ -83,7 +83,7 @@ const Reader::ImageSource& Reader::image_source(const pugi::xml_node& n, const s
         src.raster = std::move(r.image);
     };
     const auto nesting_ok = [&] {
-        if (options_.max_image_nesting > 0) return true;
+        if (options_.image_depth < options_.max_image_nesting) return true;
         problem(n, "SVG images nested deeper than " + std::to_string(options_.max_image_nesting) +
                        " (the limit); not drawn");
         return false;
@@ -107,7 +107,7 @@ const Reader::ImageSource& Reader::image_source(const pugi::xml_node& n, const s
     const ResourcePath file =
         resolve_resource_path(href, options_.base_dir, options_.resources_dir);
     if (!file.error.empty()) {
-        problem(n, "href '" + href + "': " + file.error + "; not drawn");
+        problem(n, "href " + file.error + "; not drawn");
         return src;
     }
     if (has_svg_extension(file.path)) {

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 
 namespace casteljau {
 
@@ -98,7 +99,20 @@ std::optional<Affine> Reader::viewport(const pugi::xml_node& root, Scene& scene,
     }
     vw_ = box ? box->w : scene.width;
     vh_ = box ? box->h : scene.height;
-    gradients_.emplace(root, vw_, vh_);
+    // A stop's stop-color and stop-opacity come from the cascade; its
+    // currentColor is its computed color (style_of is quiet, and leaves
+    // quiet_ cleared: restored, should a gradient be resolved while quiet).
+    gradients_.emplace(root, vw_, vh_,
+                       GradientStyle{[this](const pugi::xml_node& n, const char* property) {
+                                         return declarations(n, property);
+                                     },
+                                     [this](const pugi::xml_node& n) {
+                                         const bool quiet = quiet_;
+                                         ElementProps props;
+                                         const Rgba color = style_of(n, props).color;
+                                         quiet_ = quiet;
+                                         return color;
+                                     }});
     if (!box) return Affine::identity();
     if (box->w == 0 || box->h == 0) {
         warn(root, "viewBox: a zero width or height disables rendering");
@@ -136,11 +150,48 @@ Affine Reader::view_map(const pugi::xml_node& n, const ViewBox& box, double w, d
 // 6.9), each later one winning: presentation attributes, the style sheets'
 // normal declarations (ascending specificity, then source order), the style
 // attribute's normal ones, the sheets' !important ones, the style
-// attribute's !important ones. Without `props`, only font-size: the first of
-// two passes, since every other length may be in em. An invalid value is a
-// problem, and the property keeps what it had.
+// attribute's !important ones. `visit` is given each one's name, value and
+// where it is from as problems name it ("", "style sheet: " or "style: "),
+// and must not call matched() (the sheet's declarations are matched_).
+// With `tell`, the style attribute's syntax problems are problems.
+void Reader::cascade(const pugi::xml_node& n, bool tell, const DeclarationVisitor& visit) {
+    for (const pugi::xml_attribute& a : n.attributes())
+        if (std::strcmp(a.name(), "style") != 0) visit(a.name(), a.value(), "");
+    const std::vector<const CssDeclaration*>& sheet = matched(n);
+    std::vector<CssDeclaration> inline_style;
+    if (const pugi::xml_attribute a = n.attribute("style")) {
+        std::vector<CssProblem> problems;
+        inline_style = parse_css_declarations(a.value(), problems);
+        if (tell)
+            for (const CssProblem& p : problems) problem(n, "style: " + p.message);
+    }
+    for (const bool important : {false, true}) {
+        for (const CssDeclaration* d : sheet)
+            if (d->important == important) visit(d->name, d->value, "style sheet: ");
+        for (const CssDeclaration& d : inline_style)
+            if (d.important == important) visit(d.name, d.value, "style: ");
+    }
+}
+
+// The values declared for one property on the element, in cascade order
+// (the last wins), as declared, not checked: for the properties the caller
+// resolves itself (a stop's stop-color and stop-opacity), which must pass an
+// invalid one over for the one before it, as CSS drops an invalid declaration.
+std::vector<std::string> Reader::declarations(const pugi::xml_node& n, std::string_view property) {
+    std::vector<std::string> values;
+    cascade(n, false, [&](std::string_view name, std::string_view v, const char*) {
+        if (name == property) values.emplace_back(v);
+    });
+    return values;
+}
+
+// Applies the element's declarations (see cascade). Without `props`, only
+// font-size: the first of two passes, since every other length may be in
+// em. An invalid value is a problem, and the property keeps what it had.
 void Reader::apply_declarations(const pugi::xml_node& n, const StyleState& parent,
                                 StyleState& style, ElementProps* props, const LengthContext& ctx) {
+    if (!props)
+        for (const pugi::xml_attribute& a : n.attributes()) check_length_limit(n, a);
     ElementProps unused;
     const auto apply = [&](std::string_view name, std::string_view value, const char* from) {
         if ((name == "font-size") == (props != nullptr)) return;
@@ -148,24 +199,7 @@ void Reader::apply_declarations(const pugi::xml_node& n, const StyleState& paren
             apply_property(name, value, parent, style, props ? *props : unused, ctx);
         if (!e.empty()) problem(n, from + e + "; ignored");
     };
-    for (const pugi::xml_attribute& a : n.attributes()) {
-        if (!props) check_length_limit(n, a);
-        if (std::strcmp(a.name(), "style") != 0) apply(a.name(), a.value(), "");
-    }
-    const std::vector<const CssDeclaration*>& sheet = matched(n);
-    std::vector<CssDeclaration> inline_style;
-    if (const pugi::xml_attribute a = n.attribute("style")) {
-        std::vector<CssProblem> problems;
-        inline_style = parse_css_declarations(a.value(), problems);
-        if (props)
-            for (const CssProblem& p : problems) problem(n, "style: " + p.message);
-    }
-    for (const bool important : {false, true}) {
-        for (const CssDeclaration* d : sheet)
-            if (d->important == important) apply(d->name, d->value, "style sheet: ");
-        for (const CssDeclaration& d : inline_style)
-            if (d.important == important) apply(d.name, d.value, "style: ");
-    }
+    cascade(n, props != nullptr, std::ref(apply)); // by reference: no copy of the closure
 }
 
 // The style sheet declarations matching `n`, kept for the element's second

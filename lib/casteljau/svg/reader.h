@@ -58,6 +58,9 @@ struct SvgOptions {
     std::size_t max_image_pixels = std::size_t(1) << 25;
     /// SVG files drawn by \<image\> inside SVG files drawn by \<image\>, at most.
     int max_image_nesting = 8;
+    /// How deep this document is as an SVG image in SVG images: 0 for the
+    /// document read, set by the reader for the images it reads.
+    int image_depth = 0;
 };
 
 /// A located message about the input.

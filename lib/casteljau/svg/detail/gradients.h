@@ -7,17 +7,29 @@
 // has any. The chain stops at a missing id, at a link that would close a
 // cycle and after kMaxHrefChain links: the gradient uses what it has. Stops
 // (13.2.4): offsets are numbers or percentages, clamped to [0, 1] and made
-// nondecreasing; stop-color and stop-opacity come from attributes or the
-// style attribute. An invalid value (an attribute, a stop's) is a problem
-// and takes its initial value, as CSS error handling says.
+// nondecreasing. stop-color and stop-opacity are properties like any other
+// (SVG 2, 13.3.1): their values come from the reader's cascade (presentation
+// attributes, style sheets, the style attribute, !important), through
+// GradientStyle. Neither is inherited unless declared `inherit`: then the
+// parent's value, the gradient element's, itself perhaps declared or
+// inherited. stop-color is a color, or currentColor: the stop's computed
+// `color` (which is inherited), also when it reaches the stop through
+// inherit (CSS Color 4: currentcolor's computed value is the keyword);
+// initially black. stop-opacity is a number or a percentage, clamped to
+// [0, 1]; initially 1. An invalid declaration is a problem, told about the
+// element that declared it, and is dropped, as CSS drops it: the one before
+// it in the cascade applies, or the initial value.
 #pragma once
 
 #include "casteljau/paint/gradient.h"
 
+#include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <pugixml.hpp>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -38,10 +50,20 @@ struct GradientProblem {
     std::string message;
 };
 
+// What the index needs of the reader's style cascade.
+struct GradientStyle {
+    // The values declared for a property on an element, in cascade order
+    // (the last wins), as declared.
+    std::function<std::vector<std::string>(const pugi::xml_node&, const char*)> declarations;
+    // The element's computed `color`: what currentColor is there.
+    std::function<Rgba(const pugi::xml_node&)> current_color;
+};
+
 class GradientIndex {
   public:
     // `viewport` sizes resolve percentages of userSpaceOnUse gradients.
-    GradientIndex(const pugi::xml_node& root, double viewport_w, double viewport_h);
+    GradientIndex(const pugi::xml_node& root, double viewport_w, double viewport_h,
+                  GradientStyle style);
     GradientRef resolve(const std::string& id);
     // The problems found since the last call (each gradient is built once).
     std::vector<GradientProblem> take_problems() { return std::exchange(problems_, {}); }
@@ -49,6 +71,16 @@ class GradientIndex {
   private:
     GradientRef build(pugi::xml_node node);
     GradientStop stop(const pugi::xml_node& s, const std::vector<GradientStop>& before);
+    // A stop property's specified value and the element that declared it,
+    // `inherit` followed up the tree; nullopt for the initial value.
+    struct Specified {
+        std::string value; // trimmed
+        pugi::xml_node where;
+    };
+    std::optional<Specified> specified(const pugi::xml_node& s, const char* property,
+                                       bool (*valid)(std::string_view), const char* expected,
+                                       const char* initial);
+    GradientStyle style_;
     std::map<std::string, pugi::xml_node> by_id_;
     std::map<std::string, GradientRef> cache_;
     std::vector<GradientProblem> problems_;

@@ -115,6 +115,10 @@ class Reader {
                         " bytes, over the limit of " +
                         std::to_string(options_.max_attribute_bytes) + " bytes");
     }
+    using DeclarationVisitor =
+        std::function<void(std::string_view name, std::string_view value, const char* from)>;
+    void cascade(const pugi::xml_node& n, bool tell, const DeclarationVisitor& visit);
+    std::vector<std::string> declarations(const pugi::xml_node& n, std::string_view property);
     void apply_declarations(const pugi::xml_node& n, const StyleState& parent, StyleState& style,
                             ElementProps* props, const LengthContext& ctx);
     void walk(const pugi::xml_node& parent, const StyleState& parent_style, const Affine& ctm,
