@@ -27,6 +27,7 @@ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCASTELJAU_
       -DCASTELJAU_SANITIZE=ON -DCASTELJAU_BUILD_BENCH=OFF
 cmake --build build-asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
+LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp \
   ctest --test-dir build-asan -j "$jobs" --output-on-failure -E '^install\.'
 
 # Fuzzing smoke: 15 s per target from the seed corpus, with a fixed seed so

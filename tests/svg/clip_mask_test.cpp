@@ -29,17 +29,7 @@ Canvas render(const std::string& body, int size = 100,
     return c;
 }
 
-// The largest channel difference between two canvases of one size.
-float max_difference(const Canvas& a, const Canvas& b) {
-    float d = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x) {
-            const Premul p = a.row(y)[x], q = b.row(y)[x];
-            d = std::max({d, std::fabs(p.r - q.r), std::fabs(p.g - q.g), std::fabs(p.b - q.b),
-                          std::fabs(p.a - q.a)});
-        }
-    return d;
-}
+using testing::max_difference;
 
 TEST(ClipPath, CoverageIsTheClipShapesExactAreaCoverage) {
     // A rectangle over the canvas clipped by a circle gives, pixel for

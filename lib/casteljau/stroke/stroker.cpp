@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <span>
 #include <type_traits>
 
@@ -278,6 +280,24 @@ struct Pieces {
         if (sp.closed) close();
         open = false;
     }
+    // The runs [first, end) are the parts of one closed subpath (cut by the
+    // visible box, or its dashes), the first starting at its start and the
+    // last ending there: through that point they are one stroke, with the
+    // closing join and no caps. So the last run is moved in front of the
+    // first (or, when they are one run, the whole subpath, closed).
+    void rejoin(std::size_t first) {
+        Run& f = runs[first];
+        if (first + 1 == runs.size()) return void(f.closed = true);
+        const Run last = runs.back();
+        runs.pop_back();
+        const auto at = [&](std::size_t i) { return segments.begin() + std::ptrdiff_t(i); };
+        std::rotate(at(f.begin), at(last.begin), at(last.end));
+        const std::size_t moved = last.end - last.begin;
+        for (std::size_t r = first + 1; r < runs.size(); ++r)
+            runs[r].begin += moved, runs[r].end += moved;
+        f.start = last.start;
+        f.end += moved;
+    }
     std::span<const Segment> segments_of(const Run& r) const {
         return std::span<const Segment>(segments).subspan(r.begin, r.end - r.begin);
     }
@@ -291,7 +311,8 @@ struct Stroker::Buffers {
     Pieces pieces;
     std::vector<const Segment*> segs;
     std::vector<FlatVertex> vertices;
-    std::vector<Sample> samples;
+    std::vector<Sample> samples, before; // a segment's, the one before it's
+    std::vector<Sample> head;            // the first ones of a closed subpath's first segment
     std::vector<Point> right;
     std::vector<FlatVertex> dash_vertices;
     std::vector<double> dash_pattern;
@@ -309,11 +330,115 @@ struct Stroker::Buffers {
 
 namespace {
 
+// Where the segments p0 p1 and q0 q1 cross (their ends included), if they do.
+std::optional<Point> crossing(Point p0, Point p1, Point q0, Point q1) {
+    const Vec2 r = p1 - p0, s = q1 - q0, w = q0 - p0;
+    const double den = r.cross(s);
+    const double t = w.cross(s) / den, u = w.cross(r) / den;
+    // Parallel edges (den = 0) give no finite t, nor does NaN geometry.
+    if (!(t >= 0 && t <= 1 && u >= 0 && u <= 1)) return std::nullopt;
+    return p0 + r * t;
+}
+
+// Whether every point of q lies within r of the polyline through c's points.
+bool within(std::span<const Point> q, std::span<const Sample> c, double r) {
+    for (const Point x : q) {
+        double d = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k + 1 < c.size(); ++k)
+            d = std::min(d, distance_to_segment(x, c[k].p, c[k + 1].p));
+        if (!(d <= r)) return false;
+    }
+    return true;
+}
+
+// Edges searched on each side of an inner joint (stroker.h: the inner side
+// of a join). A line meets the next line on its first edge; curves sampled
+// more finely take a few. Bounds the search to kMeetEdges^2 tests where the
+// offsets do not meet.
+constexpr std::size_t kMeetEdges = 64;
+
+// The segments on either side of an inner joint: the samples of the one
+// before it (its last ones at least) and after it (its first ones at
+// least), and how far from them a point is in their bands: h, and tol for
+// the sampling.
+struct Neighbours {
+    std::span<const Sample> before, after;
+    double reach;
+};
+
+struct Meeting {
+    std::size_t i, j; // edges back from the joint, on from it
+    Point x;
+};
+
+// The crossing nearest the joint (least i + j, then least i) of the edges
+// (side[a - i - 1], side[a - i]), i < ni, before it and (side[b + j],
+// side[b + j + 1]), j < nj, after it, among the pairs `allowed`. None if the
+// offsets it cuts out, side[a - i, a] and side[b, b + j], do not lie in the
+// other segment's band (next to the joint: a side point is the offset of a
+// sample, one for one but for cusps): then the loop they close is not the
+// bands' overlap but goes round more, as where the path comes back across
+// itself and the offsets cross again, round a hole of the stroke.
+template <class Allowed>
+std::optional<Meeting> meeting(const std::vector<Point>& side, std::size_t a, std::size_t ni,
+                               std::size_t b, std::size_t nj, const Neighbours& n,
+                               Allowed allowed) {
+    ni = std::min(ni, kMeetEdges), nj = std::min(nj, kMeetEdges);
+    const std::span<const Point> pts(side);
+    for (std::size_t sum = 0; sum + 1 < ni + nj; ++sum)
+        for (std::size_t i = sum < nj ? 0 : sum - nj + 1; i <= sum && i < ni; ++i) {
+            const std::size_t j = sum - i;
+            if (!allowed(i, j)) continue;
+            const auto x = crossing(side[a - i - 1], side[a - i], side[b + j], side[b + j + 1]);
+            if (!x) continue;
+            if (!within(pts.subspan(a - i, i + 1), n.after.first(std::min(n.after.size(), j + 2)),
+                        n.reach) ||
+                !within(pts.subspan(b, j + 1), n.before.last(std::min(n.before.size(), i + 2)),
+                        n.reach))
+                return std::nullopt;
+            return Meeting{i, j, *x};
+        }
+    return std::nullopt;
+}
+
+// The inner side of a join runs ..., A, p, B, ... through the joint p at
+// `joint`, from the offsets of the segment before it (from `begin`) to those
+// of the segment after it (to the end). Where they cross, at X, the loop
+// X ... A p B ... X, which goes round the part of the two segments' bands
+// that overlaps, is cut out. Returns where the segment after the joint now
+// begins on this side: X, or B.
+std::size_t meet(std::vector<Point>& side, std::size_t begin, std::size_t joint,
+                 const Neighbours& n) {
+    const std::size_t a = joint - 1, b = joint + 1;
+    const auto m = meeting(side, a, a - begin, b, side.size() - 1 - b, n,
+                           [](std::size_t, std::size_t) { return true; });
+    if (!m) return b;
+    const std::size_t x = a - m->i;
+    side[x] = m->x;
+    side.erase(side.begin() + std::ptrdiff_t(x + 1), side.begin() + std::ptrdiff_t(b + m->j + 1));
+    return x;
+}
+
+// meet() for the join that closes a subpath: the joint is the side's last
+// point, and the segment after it is the first, side[0, first_end). At
+// least two points besides X are kept (the two offsets are one curve's
+// when the subpath has one segment).
+void meet_closing(std::vector<Point>& side, std::size_t begin, std::size_t first_end,
+                  const Neighbours& n) {
+    const std::size_t a = side.size() - 2;
+    const auto m = meeting(side, a, a - begin, 0, first_end - 1, n,
+                           [&](std::size_t i, std::size_t j) { return j + 2 < a - i; });
+    if (!m) return;
+    side.resize(a - m->i);
+    side.push_back(m->x);
+    side.erase(side.begin(), side.begin() + std::ptrdiff_t(m->j + 1));
+}
+
 // One side of the outline, or a cap or join, is built on a point list.
 class Outline {
   public:
     Outline(double h, double tol, const StrokeGeometry& st, Stroker::Buffers& b)
-        : h_(h), dphi_(max_normal_turn(h, tol)), st_(st), b_(b),
+        : h_(h), tol_(tol), dphi_(max_normal_turn(h, tol)), st_(st), b_(b),
           sampler_(h, tol, dphi_, b.vertices) {}
 
     // Arc of radius h around c from direction u0 to u1, turning `sweep` radians
@@ -328,13 +453,15 @@ class Outline {
     }
 
     // Join at p from tangent d0 to d1. `side` +1 builds the left side (p + h n), -1 the right.
-    void join(std::vector<Point>& out, Point p, Vec2 d0, Vec2 d1, int side, LineJoin how) const {
+    // True when this is the inner side: then it went through the joint,
+    // whose loop meet() may cut out once the offsets after it are built.
+    bool join(std::vector<Point>& out, Point p, Vec2 d0, Vec2 d1, int side, LineJoin how) const {
         const Vec2 n0 = d0.perp() * double(side), n1 = d1.perp() * double(side);
         const double turn = d0.cross(d1) * side; // > 0: this side is the inner one
-        if (std::fabs(d0.cross(d1)) < 1e-12 && d0.dot(d1) > 0) return; // straight on
+        if (std::fabs(d0.cross(d1)) < 1e-12 && d0.dot(d1) > 0) return false; // straight on
         if (turn > 0 && d0.dot(d1) > -1 + 1e-12) {
-            out.push_back(p); // inner side: through the joint (filled by nonzero)
-            return;
+            out.push_back(p);
+            return true;
         }
         if (how == LineJoin::Round) {
             const double sweep = std::atan2(n0.cross(n1), n0.dot(n1));
@@ -345,6 +472,7 @@ class Outline {
                 1.0 / std::sqrt(std::max(1e-300, (1.0 + c) / 2.0)); // 1 / sin(theta / 2)
             if (ratio <= st_.miter_limit) out.push_back(p + (n0 + n1) * (h_ / (1.0 + c)));
         } // bevel: the straight edge to the next offset point
+        return false;
     }
 
     // Cap at the end point p with unit tangent d (pointing out of the stroke),
@@ -391,17 +519,24 @@ class Outline {
         std::vector<Point>& right = closed ? b_.polygons[right_at] : b_.right;
         right.clear();
         std::vector<Sample>& samples = b_.samples;
+        std::vector<Sample>& before = b_.before;
+        std::vector<Sample>& head = b_.head;
         Vec2 first_d{}, last_d{};
         Point last_p{};
+        // Per side (left, right): where the last segment's offsets begin and
+        // the first one's end, which bound the offsets meet() searches.
+        std::vector<Point>* const sides[2] = {&left, &right};
+        const int sign[2] = {+1, -1};
+        std::size_t begin[2] = {0, 0}, first_end[2] = {0, 0};
         for (std::size_t i = 0; i < segs.size(); ++i) {
+            samples.swap(before);
             samples.clear();
             sampler_.run(*segs[i], samples);
-            if (i == 0) {
-                first_d = samples[0].d;
-            } else {
-                join(left, samples[0].p, last_d, samples[0].d, +1, st_.join);
-                join(right, samples[0].p, last_d, samples[0].d, -1, st_.join);
-            }
+            bool inner[2] = {false, false};
+            if (i == 0) first_d = samples[0].d;
+            for (int s = 0; s < 2 && i > 0; ++s)
+                inner[s] = join(*sides[s], samples[0].p, last_d, samples[0].d, sign[s], st_.join);
+            const std::size_t at[2] = {left.size(), right.size()}; // its first offsets
             for (std::size_t k = 0; k < samples.size(); ++k) {
                 const Sample& s = samples[k];
                 if (s.cusp_before && k > 0) { // a cusp inside the curve: round it
@@ -411,6 +546,16 @@ class Outline {
                 left.push_back(s.p + s.d.perp() * h_);
                 right.push_back(s.p - s.d.perp() * h_);
             }
+            const Neighbours around{before, samples, h_ + tol_};
+            for (int s = 0; s < 2; ++s) {
+                begin[s] = inner[s] ? meet(*sides[s], begin[s], at[s] - 1, around) : at[s];
+                if (i == 0) first_end[s] = sides[s]->size();
+                if (i == 1) first_end[s] = std::min(first_end[s], begin[s] + 1); // cut at X
+            }
+            if (i == 0 && closed) { // for meet_closing, once `samples` is another segment's
+                const std::size_t n = std::min(samples.size(), kMeetEdges + 1);
+                head.assign(samples.begin(), samples.begin() + std::ptrdiff_t(n));
+            }
             last_d = samples.back().d;
             last_p = samples.back().p;
             if (left.size() + right.size() > budget) {
@@ -419,8 +564,10 @@ class Outline {
             }
         }
         if (closed) {
-            join(left, last_p, last_d, first_d, +1, st_.join);
-            join(right, last_p, last_d, first_d, -1, st_.join);
+            const Neighbours around{samples, head, h_ + tol_};
+            for (int s = 0; s < 2; ++s)
+                if (join(*sides[s], last_p, last_d, first_d, sign[s], st_.join))
+                    meet_closing(*sides[s], begin[s], first_end[s], around);
             std::reverse(right.begin(), right.end());
             return true;
         }
@@ -431,7 +578,7 @@ class Outline {
     }
 
   private:
-    double h_, dphi_;
+    double h_, tol_, dphi_;
     const StrokeGeometry& st_;
     Stroker::Buffers& b_;
     Sampler sampler_; // one per stroke: its buffers serve every segment
@@ -497,9 +644,13 @@ void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
     for (const Subpath& sp : path.subpaths()) {
         DashCursor dash(pattern, period, st.dash_offset);
         bool open = false; // the last emitted dash continues into this piece
+        const std::size_t first = out.runs.size();
+        bool from_start = false; // the first dash starts at the subpath's start
         const auto emit = [&](const Segment& seg, double ta, double tb) {
             const Segment piece = segment_subsegment(seg, ta, tb);
             if (!segment_control_bounds(piece).intersects(keep)) return void(open = false);
+            if (!open && out.runs.size() == first)
+                from_start = ta == 0 && &seg == &sp.segments.front();
             if (!open) out.move_to(segment_start(piece));
             out.append(piece);
             open = true;
@@ -563,6 +714,7 @@ void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
             if (walked >= kMaxDashes) return; // the rest is not drawn
             if (dash.in_dash() && t_from < 1) emit(seg, t_from, 1.0);
         }
+        if (sp.closed && open && from_start) out.rejoin(first); // a dash through the start
     }
 }
 
@@ -573,23 +725,32 @@ void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
 // pieces are small or miss, and a piece still large at kCullDepth is taken
 // as its chord, clipped. So strokes of curves reaching 1e308 cost what their
 // visible part costs, and the outline never measures a length beyond it
-// (whose square would overflow).
+// (whose square would overflow). A closed subpath cut so keeps its closing
+// join: its part ending at its start goes on into the part starting there.
+// (It had caps there instead, where the renderer's strip of rows cut it
+// elsewhere; and a line wholly outside did not count as a cut, so the
+// parts were closed with a line across the drawing.)
 void visible_part(const Path& path, const Rect& keep, Pieces& out) {
     const double small = 4 * std::max(keep.width(), keep.height());
     for (const Subpath& sp : path.subpaths()) {
-        bool open = false, cut = false;
+        bool open = false, cut = false; // cut: a part of it has been left out
+        const std::size_t first = out.runs.size();
+        bool from_start = false; // the first part starts at the subpath's start
         const auto keep_piece = [&](const Segment& piece) {
+            if (!open && out.runs.size() == first) from_start = !cut;
             if (!open) out.move_to(segment_start(piece));
             out.append(piece);
             open = true;
         };
         const auto keep_line = [&](Point a, Point b) {
             const auto part = clip_line(a, b, keep);
-            if (!part) return void(open = false);
-            if (part->front() != a || part->back() != b) cut = true;
-            if (part->front() != a) open = false;
+            if (!part) {
+                open = false, cut = true;
+                return;
+            }
+            if (part->front() != a) open = false, cut = true; // before from_start is taken
             keep_piece(Line{{part->front(), part->back()}});
-            if (part->back() != b) open = false;
+            if (part->back() != b) open = false, cut = true;
         };
         for (const Segment& seg : sp.segments) {
             std::visit(
@@ -613,7 +774,7 @@ void visible_part(const Path& path, const Rect& keep, Pieces& out) {
                 },
                 seg);
         }
-        if (sp.closed && !cut) out.close();
+        if (sp.closed && open && from_start) out.rejoin(first);
         out.open = false;
     }
 }

@@ -14,9 +14,11 @@
 // Where an image may come from (svg/resource_url.h): a data: URL, or a file
 // in the SVG's folder and below, or below SvgOptions::resources_dir; never
 // the network. Limits: SvgOptions::max_image_pixels for a raster image,
-// max_image_nesting for SVG images inside SVG images, and the elements an
-// SVG image adds count against max_elements. An image that cannot be used
-// is a problem, and is not drawn. Each href is read once per document.
+// max_image_nesting for SVG images inside SVG images, max_images and
+// max_image_pixels_total for all that a document and its SVG images read
+// (a file drawing itself under many hrefs would otherwise be read k^depth
+// times), and the elements an SVG image adds count against max_elements. An image that cannot be
+// used is a problem, and is not drawn. Each href is read once per document.
 #include "casteljau/io/image_read.h"
 #include "casteljau/svg/detail/reader_impl.h"
 #include "casteljau/svg/resource_url.h"
@@ -66,6 +68,16 @@ bool has_svg_extension(const std::string& path) {
 const Reader::ImageSource& Reader::image_source(const pugi::xml_node& n, const std::string& href) {
     if (const auto it = images_.find(href); it != images_.end()) return it->second;
     ImageSource& src = images_[href];
+    ImageBudget& budget = *options_.image_budget;
+    if (++budget.images > options_.max_images) {
+        problem(n, "more than " + std::to_string(options_.max_images) +
+                       " images in the document and its SVG images (the limit); not drawn");
+        return src;
+    }
+    // What is left of the pixels all the images may decode, at most one image's limit.
+    const std::size_t pixels = std::min(
+        options_.max_image_pixels,
+        options_.max_image_pixels_total - std::min(budget.pixels, options_.max_image_pixels_total));
     SvgOptions nested = options_;
     ++nested.image_depth;
     const auto svg_from = [&](SvgResult doc) {
@@ -78,6 +90,7 @@ const Reader::ImageSource& Reader::image_source(const pugi::xml_node& n, const s
     };
     const auto raster_from = [&](ImageReadResult r) {
         if (!r.image) return problem(n, "the image cannot be drawn: " + r.error);
+        budget.pixels += std::size_t(r.image->width) * std::size_t(r.image->height);
         src.width = r.image->width;
         src.height = r.image->height;
         src.raster = std::move(r.image);
@@ -96,7 +109,7 @@ const Reader::ImageSource& Reader::image_source(const pugi::xml_node& n, const s
                     {reinterpret_cast<const char*>(data->bytes.data()), data->bytes.size()},
                     name_ + " (a data: URL's SVG)", nested));
         } else {
-            raster_from(decode_image(data->bytes, options_.max_image_pixels));
+            raster_from(decode_image(data->bytes, pixels));
         }
         return src;
     }
@@ -114,7 +127,7 @@ const Reader::ImageSource& Reader::image_source(const pugi::xml_node& n, const s
         nested.base_dir.clear(); // its own folder
         if (nesting_ok()) svg_from(read_svg_file(file.path, nested));
     } else {
-        raster_from(read_image_file(file.path, options_.max_image_pixels));
+        raster_from(read_image_file(file.path, pixels));
     }
     return src;
 }

@@ -24,12 +24,20 @@
 #include "casteljau/scene/scene.h"
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace casteljau {
+
+/// What a document and the SVG images it draws have read, counted together
+/// against SvgOptions::max_images and max_image_pixels_total.
+struct ImageBudget {
+    std::size_t images = 0; ///< raster and SVG images read
+    std::size_t pixels = 0; ///< raster pixels decoded
+};
 
 /// Limits and options of the SVG reader.
 struct SvgOptions {
@@ -58,6 +66,14 @@ struct SvgOptions {
     std::size_t max_image_pixels = std::size_t(1) << 25;
     /// SVG files drawn by \<image\> inside SVG files drawn by \<image\>, at most.
     int max_image_nesting = 8;
+    /// Images read for a document, those of its SVG images included (a file
+    /// that draws itself under many names is read this often at most), and
+    /// the raster pixels they decode, together (1 GiB of float pixels).
+    std::size_t max_images = 1000;
+    std::size_t max_image_pixels_total = std::size_t(1) << 26;
+    /// The count against those, shared with the readers of the SVG images a
+    /// document draws; the reader makes one when it is null.
+    std::shared_ptr<ImageBudget> image_budget;
     /// How deep this document is as an SVG image in SVG images: 0 for the
     /// document read, set by the reader for the images it reads.
     int image_depth = 0;

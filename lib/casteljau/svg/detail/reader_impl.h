@@ -58,6 +58,7 @@ class Reader {
   public:
     Reader(std::string_view text, std::string name, const SvgOptions& options)
         : text_(text), name_(std::move(name)), options_(options) {
+        if (!options_.image_budget) options_.image_budget = std::make_shared<ImageBudget>();
         for (std::size_t i = 0; i < text.size(); ++i)
             if (text[i] == '\n') newlines_.push_back(i);
     }
