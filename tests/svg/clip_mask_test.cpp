@@ -243,6 +243,29 @@ TEST(BlendMode, IsolationKeepsTheBackdropOut) {
     EXPECT_NEAR(p.row(50)[75].b, 1, 1e-6);
 }
 
+TEST(LayerBudget, OverItAClippedGroupIsNotDrawnAndAnOpaqueOneIsDrawnStraight) {
+    // Past the layer budget, what a clip would hide never shows; a group
+    // with only opacity is drawn without it.
+    const SvgResult doc = parse_svg(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="40">
+        <clipPath id="c"><rect width="10" height="10"/></clipPath>
+        <rect width="40" height="40" fill="#f00" clip-path="url(#c)"/>
+        <g opacity="0.5"><rect y="20" width="40" height="20" fill="#00f"/></g></svg>)svg",
+                                    "t.svg");
+    ASSERT_TRUE(doc.scene) << doc.error;
+    Canvas c(40, 40);
+    Renderer r;
+    r.set_layer_budget(1000); // fewer bytes than any layer here
+    r.render(*doc.scene, Affine::identity(), c, RenderOptions{});
+    EXPECT_EQ(c.row(5)[5].a, 0.0f) << "the clipped rectangle: not drawn at all";
+    EXPECT_EQ(c.row(30)[30].b, 1.0f) << "the group: drawn straight, opaque";
+    r.set_layer_budget(kMaxLayerBytes);
+    c.reset(40, 40);
+    r.render(*doc.scene, Affine::identity(), c, RenderOptions{});
+    EXPECT_EQ(c.row(5)[5].r, 1.0f);
+    EXPECT_EQ(c.row(15)[15].a, 0.0f);
+    EXPECT_NEAR(c.row(30)[30].b, 0.5f, 1e-6f);
+}
+
 // Layers for clips, masks, blend modes and pattern tiles keep bands (and
 // threads) bit-identical to one whole-frame render.
 template <class C>

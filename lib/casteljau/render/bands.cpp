@@ -60,6 +60,7 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, BasicCa
     const int bands = std::max(1, (h + kBandRows - 1) / kBandRows);
     const int n = std::clamp(threads, 1, bands);
     while (int(renderers_.size()) < n) renderers_.push_back(std::make_unique<Renderer>());
+    for (int t = 0; t < n; ++t) renderers_[std::size_t(t)]->set_layer_budget(kMaxLayerBytes / n);
     auto& views = std::get<std::vector<BasicCanvas<Pixel>>>(bands_);
     views.resize(std::size_t(n));
     const PixelRect frame{0, 0, w, h};

@@ -119,7 +119,7 @@ Rect Renderer::group_reach_box(const Group& g, const Affine& view) {
 template <class Target>
 Target* Renderer::acquire_layer(int w, int h, int x0, int y0) {
     const std::size_t bytes = std::size_t(w) * std::size_t(h) * sizeof(typename Target::pixel_type);
-    if (layer_bytes_ + bytes > kMaxLayerBytes) return nullptr;
+    if (layer_bytes_ + bytes > layer_budget_) return nullptr;
     auto& layers = std::get<std::vector<std::unique_ptr<Target>>>(layers_);
     if (int(layers.size()) <= layers_used_) layers.push_back(std::make_unique<Target>());
     Target& l = *layers[std::size_t(layers_used_++)];
@@ -163,8 +163,12 @@ void Renderer::draw_group(const Group& g, Target& target) {
         return;
     }
     in_layer(group_reach_box(g, view_), target, g.opacity, g.blend, [&](Target& l) {
+        // Over the layer budget, l is the target: drawn straight, with its
+        // opacity and blend mode left out, or, clipped or masked, not at
+        // all (what a clip hides must not show).
+        if (&l == &target && (g.clip || g.mask)) return;
         draw_children(g, l);
-        if (&l == &target) return; // over the layer budget: drawn straight, unclipped
+        if (&l == &target) return;
         if (g.clip) mask_layer(*g.clip, l);
         if (g.mask) mask_layer(*g.mask, l);
     });
@@ -174,7 +178,10 @@ template <class Target>
 void Renderer::mask_layer(const Mask& mask, Target& layer) {
     Target* m =
         acquire_layer<Target>(layer.width(), layer.height(), layer.origin_x(), layer.origin_y());
-    if (!m) return; // over the layer budget: the layer stays unmasked
+    if (!m) { // over the layer budget: masked away wholly, not left unmasked
+        layer.reset(layer.width(), layer.height(), layer.origin_x(), layer.origin_y());
+        return;
+    }
     draw_group(mask.content, *m);
     const auto t = stage_start(*options_);
     apply_mask(layer, *m, mask.kind);

@@ -11,11 +11,12 @@
 // state a frame allocates nothing new.
 //
 // Layer memory: one layer per group, clip or mask in flight, each at most
-// the target's size, and at most kMaxLayerBytes in flight at once: a group
-// nested deeper than that allows is drawn straight onto what is under it,
-// its opacity, clip, mask and blend mode left out (a degraded picture, not
-// an unbounded one). Pattern tiles are at most kMaxTilePixels each, one per
-// pattern nesting level.
+// the target's size, and at most a budget in flight at once (kMaxLayerBytes,
+// shared by the threads of a BandRenderer): a group nested deeper than that
+// allows is drawn straight onto what is under it, its opacity and blend
+// mode left out, or not at all when it is clipped or masked (a degraded
+// picture, not an unbounded one, and never one that shows what a clip hides). Pattern tiles are at
+// most kMaxTilePixels each, one per pattern nesting level.
 #pragma once
 
 #include "casteljau/flatten/path_flatten.h"
@@ -105,6 +106,11 @@ class Renderer {
     /// How far (device px) a shape's stroke can reach beyond its path.
     static double stroke_reach(const Shape& s, const Affine& to_device);
 
+    /// The bytes of layers this renderer may have in flight (kMaxLayerBytes
+    /// unless set): BandRenderer gives each of its threads an equal share,
+    /// so a picture degraded by the budget may differ between thread counts.
+    void set_layer_budget(std::size_t bytes) { layer_budget_ = bytes; }
+
   private:
     void begin(const Affine& view, const RenderOptions& options, const PixelRect& frame);
     template <class Target>
@@ -147,7 +153,8 @@ class Renderer {
     /// Layers in flight, a stack, per pixel format; the first layers_used_ are taken.
     std::tuple<std::vector<std::unique_ptr<Canvas>>, std::vector<std::unique_ptr<Canvas8>>> layers_;
     int layers_used_ = 0;
-    std::size_t layer_bytes_ = 0;          ///< the pixels of the layers in flight
+    std::size_t layer_bytes_ = 0; ///< the pixels of the layers in flight
+    std::size_t layer_budget_ = kMaxLayerBytes;
     std::vector<std::size_t> layer_sizes_; ///< each one's, a stack
     ImageShader image_shader_;             ///< images and pattern tiles
     /// A pattern's tile: drawn by a renderer of its own, kept while the
