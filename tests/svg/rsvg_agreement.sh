@@ -115,6 +115,8 @@ for svg in "$@" "$tmp/translucent.svg"; do
     report=$(oiiotool "$tmp/$n.ours.png" --ch R,G,B "$tmp/$n.rsvg.png" --ch R,G,B --diff 2>&1)
     mean=$(sed -nE 's/.*Mean error = ([0-9.e+-]+).*/\1/p' <<<"$report")
     max=$(sed -nE 's/.*Max error  = ([0-9.e+-]+).*/\1/p' <<<"$report")
+    # Identical images: oiiotool prints only PASS, no error figures.
+    if [[ -z $mean && $report == *PASS* && $report != *error* ]]; then mean=0 max=0; fi
     if awk -v m="${mean:-1}" -v x="${max:-1}" -v b="$bound" 'BEGIN { exit !(m < 1/255 && x <= b) }'; then
         passes=$((passes+1)); echo "ok   $n over white: mean $mean, max $max (bound $bound)"
     else
