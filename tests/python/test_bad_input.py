@@ -8,9 +8,12 @@ tests/bad_input/bad_input_test.py (read from its source, so the two cannot
 drift apart).
 """
 import ast
+import base64
 import os
 import re
+import struct
 import warnings
+import zlib
 
 import numpy as np
 import pytest
@@ -22,13 +25,15 @@ PATCH_EXTENSIONS = (".bpt", ".map", ".json")
 
 
 def corpus_tables():
-    """BAD, RECOVERED and generate_bad from bad_input_test.py, without running it."""
+    """BAD, RECOVERED and generate_bad (with the functions it calls) from
+    bad_input_test.py, without running it."""
     tree = ast.parse((BAD_INPUT / "bad_input_test.py").read_text())
     keep = [n for n in tree.body
             if (isinstance(n, ast.Assign) and any(getattr(t, "id", "") in ("BAD", "RECOVERED")
                                                   for t in n.targets))
-            or (isinstance(n, ast.FunctionDef) and n.name == "generate_bad")]
-    namespace = {"os": os}
+            or (isinstance(n, ast.FunctionDef)
+                and n.name in ("generate_bad", "content_bomb", "png_header_only"))]
+    namespace = {"os": os, "base64": base64, "struct": struct, "zlib": zlib}
     exec(compile(ast.Module(body=keep, type_ignores=[]), "bad_input_test.py", "exec"), namespace)
     return namespace["BAD"], namespace["RECOVERED"], namespace["generate_bad"]
 
@@ -80,8 +85,8 @@ def test_refused_with_the_cli_message(name, generated, tmp_path):
 
 
 @pytest.mark.parametrize("name", sorted(RECOVERED))
-def test_recovered_with_one_warning(name, tmp_path):
-    src = BAD_INPUT / name
+def test_recovered_with_one_warning(name, generated, tmp_path):
+    src = source(name, generated)
     where = located(str(src), RECOVERED[name])
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
