@@ -41,7 +41,7 @@ for name in "${targets[@]}"; do
         path_data) dict=(-dict=tests/fuzz/path_data.dict) ;;
     esac
     echo "fuzz_$name: ${seconds}s"
-    if ! UBSAN_OPTIONS=print_stacktrace=1 "build-fuzz/tests/fuzz/fuzz_$name" "$work" "${dict[@]}" \
+    if ! UBSAN_OPTIONS=print_stacktrace=1 LSAN_OPTIONS=suppressions=tests/lsan.supp "build-fuzz/tests/fuzz/fuzz_$name" "$work" "${dict[@]}" \
             -max_total_time="$seconds" -rss_limit_mb=1024 -malloc_limit_mb=1024 -timeout="$timeout" \
             -artifact_prefix="$findings/" -print_final_stats=1 -seed="${FUZZ_SEED:-0}" >"build-fuzz/fuzz_$name.log" 2>&1; then
         echo "fuzz_$name: FINDING, see build-fuzz/fuzz_$name.log and $findings/"
