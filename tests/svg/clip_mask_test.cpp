@@ -150,6 +150,27 @@ TEST(Overflow, ASymbolIsClippedToItsViewport) {
     EXPECT_GT(v.row(50)[20].a, 0.99f);
 }
 
+TEST(Overflow, TheClipPropertyGivesTheViewportsClipRectangle) {
+    // clip: rect(top, right, bottom, left), offsets from the viewport's
+    // corner, auto for its edge; it replaces the viewport's bounds as the
+    // clip where overflow hides (SVG 1.1, 14.3.2); invalid, it is ignored.
+    const Canvas c = render(R"svg(<svg x="20" y="20" width="60" height="60"
+          clip="rect(10, auto, 50px, 5)"><rect x="-20" y="-20" width="100" height="100"/></svg>)svg");
+    EXPECT_GT(c.row(31)[26].a, 0.99f) << "inside (25..80 x 30..70)";
+    EXPECT_EQ(c.row(28)[40].a, 0.0f) << "above its top";
+    EXPECT_EQ(c.row(50)[23].a, 0.0f) << "left of its left";
+    EXPECT_EQ(c.row(72)[40].a, 0.0f) << "below its bottom";
+    EXPECT_GT(c.row(50)[79].a, 0.99f) << "auto: the viewport's right edge";
+    EXPECT_EQ(c.row(50)[81].a, 0.0f);
+    std::vector<SvgDiagnostic> w;
+    const Canvas bad = render(R"svg(<svg x="20" y="20" width="60" height="60" clip="rect(1 2 3)">
+          <rect x="-20" y="-20" width="100" height="100"/></svg>)svg",
+                              100, &w);
+    EXPECT_EQ(w.size(), 1u);
+    EXPECT_GT(bad.row(21)[21].a, 0.99f) << "the viewport's bounds";
+    EXPECT_EQ(bad.row(19)[21].a, 0.0f);
+}
+
 TEST(Pattern, ATileFilledWhollyPaintsAsItsColor) {
     // A tile its content covers wholly is its color everywhere: no seams,
     // whatever the tile's alignment to pixels.
@@ -246,11 +267,12 @@ TEST(BlendMode, IsolationKeepsTheBackdropOut) {
 TEST(LayerBudget, OverItAClippedGroupIsNotDrawnAndAnOpaqueOneIsDrawnStraight) {
     // Past the layer budget, what a clip would hide never shows; a group
     // with only opacity is drawn without it.
-    const SvgResult doc = parse_svg(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="40">
+    const SvgResult doc =
+        parse_svg(R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="40" height="40">
         <clipPath id="c"><rect width="10" height="10"/></clipPath>
         <rect width="40" height="40" fill="#f00" clip-path="url(#c)"/>
         <g opacity="0.5"><rect y="20" width="40" height="20" fill="#00f"/></g></svg>)svg",
-                                    "t.svg");
+                  "t.svg");
     ASSERT_TRUE(doc.scene) << doc.error;
     Canvas c(40, 40);
     Renderer r;

@@ -71,8 +71,9 @@ void Reader::use(const pugi::xml_node& n, const StyleState& style, const Affine&
 // one is an error and a zero one disables rendering. Its viewBox,
 // preserveAspectRatio and, for a symbol, refX and refY (SVG 2) map its
 // content. Percentages inside refer to it. Its content is clipped to it
-// unless its overflow is visible or auto (SVG 1.1, 14.3.3; hidden is the
-// UA style sheet's value for these elements).
+// (or to its clip property's rectangle) unless its overflow is visible or
+// auto (SVG 1.1, 14.3.3; hidden is the UA style sheet's value for these
+// elements).
 void Reader::nested_viewport(const pugi::xml_node& n, const pugi::xml_node& sizes,
                              const StyleState& style, const ElementProps& props, const Affine& m,
                              Group& out, int depth) {
@@ -109,8 +110,16 @@ void Reader::nested_viewport(const pugi::xml_node& n, const pugi::xml_node& size
     walk(n, style, inner, content, depth + 1);
     vw_ = saved_w, vh_ = saved_h;
     if (!props.overflow_visible.value_or(false) && !clip_mode_)
-        content.clip = viewport_clip(content, {0, 0, *w, *h}, port);
+        content.clip = viewport_clip(content, clip_box(props, *w, *h), port);
     add_group(out, std::move(content));
+}
+
+// What a viewport of w x h clips its content to where overflow hides it:
+// itself, or the clip property's rectangle (its offsets from the viewport's
+// corner; auto, an edge of the viewport).
+Rect Reader::clip_box(const ElementProps& props, double w, double h) {
+    const auto& [top, right, bottom, left] = props.clip_rect;
+    return {left.value_or(0), top.value_or(0), right.value_or(w), bottom.value_or(h)};
 }
 
 // How many elements the walk would visit under `n`, <use> instances
@@ -291,7 +300,8 @@ void Reader::marker(const pugi::xml_node& mk, const MarkerVertex& v, const Shape
     walk(mk, style, port * view, g, depth + 1);
     context_.pop_back();
     instancing_.pop_back();
-    if (!props.overflow_visible.value_or(false)) g.clip = viewport_clip(g, {0, 0, *w, *h}, port);
+    if (!props.overflow_visible.value_or(false))
+        g.clip = viewport_clip(g, clip_box(props, *w, *h), port);
     add_group(out, std::move(g));
 }
 

@@ -261,6 +261,37 @@ std::optional<Vec2> parse_transform_origin(std::string_view v, const LengthConte
     return Vec2{f[0], f[1]};
 }
 
+// clip: auto, or rect(top, right, bottom, left), each a length or auto
+// (auto: that edge of the viewport), separated by commas or, as CSS 2.1
+// also allows, by white space.
+std::optional<std::array<std::optional<double>, 4>> parse_clip_rect(std::string_view v,
+                                                                    const LengthContext& ctx) {
+    std::array<std::optional<double>, 4> r;
+    v = trim(v);
+    if (iequals(v, "auto")) return r;
+    if (v.size() < 6 || !iequals(v.substr(0, 5), "rect(") || v.back() != ')') return std::nullopt;
+    v = v.substr(5, v.size() - 6);
+    std::size_t n = 0;
+    for (std::size_t i = 0; i <= v.size() && n <= 4;) {
+        std::size_t end = i;
+        while (end < v.size() && v[end] != ',' && !std::isspace(static_cast<unsigned char>(v[end])))
+            ++end;
+        const std::string_view word = v.substr(i, end - i);
+        if (!word.empty()) {
+            if (n == 4) return std::nullopt;
+            if (!iequals(word, "auto")) {
+                const auto len = parse_length(word, 0, ctx);
+                if (!len) return std::nullopt;
+                r[n] = len;
+            }
+            ++n;
+        }
+        i = end + 1;
+    }
+    if (n != 4) return std::nullopt;
+    return r;
+}
+
 } // namespace
 
 std::optional<Rgba> resolve_paint(const PaintSpec& p, const StyleState& s) {
@@ -402,6 +433,9 @@ std::string apply_property(std::string_view name, std::string_view value, const 
                                         {"pixelated", false},
                                         {"crisp-edges", false}}),
                    "auto, optimizeQuality, optimizeSpeed, smooth, pixelated or crisp-edges");
+    if (name == "clip")
+        return set(props.clip_rect, std::array<std::optional<double>, 4>{},
+                   parse_clip_rect(value, ctx), "auto or rect(top, right, bottom, left)");
     // overflow: visible and auto show what is outside a viewport; hidden,
     // scroll and clip clip it (SVG 1.1, 14.3.3: auto is visible).
     if (name == "overflow")

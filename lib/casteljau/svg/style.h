@@ -102,6 +102,11 @@ struct ElementProps {
     /// visible, but hidden on the elements that establish a viewport (svg,
     /// symbol, marker, pattern, image) by the UA style sheet (SVG 2, appendix D).
     std::optional<bool> overflow_visible;
+    /// clip (CSS 2.1, 11.1.2; SVG 1.1, 14.3.2): on an element that
+    /// establishes a viewport, the rectangle its content is clipped to where
+    /// overflow hides it, as top, right, bottom, left offsets from the
+    /// viewport's top-left corner; nullopt for an edge of the viewport (auto).
+    std::array<std::optional<double>, 4> clip_rect;
 };
 
 /// Applies one property. Returns "" when applied or unknown, otherwise what is

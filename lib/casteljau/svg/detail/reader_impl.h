@@ -170,6 +170,7 @@ class Reader {
     static std::shared_ptr<const Mask> viewport_clip(const Group& content, const Rect& r,
                                                      const Affine& m);
     std::size_t expanded_size(const pugi::xml_node& n, int depth);
+    static Rect clip_box(const ElementProps& props, double w, double h);
     StyleState style_of(const pugi::xml_node& n, ElementProps& props);
     void to_host_space(Shape& s);
     void markers(const pugi::xml_node& n, const Shape& s, const StyleState& style, Group& out,
