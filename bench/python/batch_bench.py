@@ -28,6 +28,10 @@ import shutil
 import statistics
 import subprocess
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                "examples", "svg"))
+import make_dense  # noqa: E402  (the dense scene's generator, shared)
 import tempfile
 import time
 
@@ -67,32 +71,8 @@ def icon_svg(r):
 
 
 def drawing_svg(r):
-    """As examples/svg/make_dense.py, with this generator's seed."""
-    out = ['<svg xmlns="http://www.w3.org/2000/svg" width="1024" height="768">',
-           '  <rect width="1024" height="768" fill="#101418"/>']
-    for i in range(3000):
-        x, y = r.uniform(0, 1024), r.uniform(0, 768)
-        s = r.uniform(4, 40)
-        col = "#%02x%02x%02x" % (r.randrange(40, 256), r.randrange(40, 256), r.randrange(40, 256))
-        op = round(r.uniform(0.3, 1.0), 2)
-        k = i % 4
-        if k == 0:
-            out.append(f'  <circle cx="{x:.1f}" cy="{y:.1f}" r="{s/2:.1f}" fill="{col}" '
-                       f'fill-opacity="{op}"/>')
-        elif k == 1:
-            out.append(f'  <path d="M{x:.1f} {y:.1f} c {r.uniform(-s, s):.1f} {-s:.1f} {s:.1f} '
-                       f'{-s:.1f} {s:.1f} 0 s {-s/2:.1f} {s:.1f} {-s:.1f} {s/2:.1f} z" '
-                       f'fill="{col}" fill-opacity="{op}"/>')
-        elif k == 2:
-            out.append(f'  <rect x="{x:.1f}" y="{y:.1f}" width="{s:.1f}" height="{s*0.6:.1f}" '
-                       f'rx="{s/5:.1f}" fill="{col}" fill-opacity="{op}" '
-                       f'transform="rotate({r.uniform(0, 90):.0f} {x:.1f} {y:.1f})"/>')
-        else:
-            out.append(f'  <path d="M{x:.1f} {y:.1f} q {s/2:.1f} {-s:.1f} {s:.1f} 0 t {s:.1f} 0 '
-                       f'a {s/2:.1f} {s/3:.1f} 0 0 1 {-2*s:.1f} 0" fill="{col}" '
-                       f'fill-opacity="{op}"/>')
-    out.append("</svg>\n")
-    return "\n".join(out)
+    """The dense example scene (examples/svg/make_dense.py) from this generator."""
+    return make_dense.dense_svg(r, title=False)
 
 
 def generate(folder, count, make, seed, per_folder=100):

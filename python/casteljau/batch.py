@@ -186,11 +186,14 @@ def render_group(items, options):
 # --------------------------------------------------------------------------------------------
 # Client side.
 
-def _positive_int(text):
-    value = int(text)
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"must be at least 1, not {value}")
-    return value
+def _int_at_least(low):
+    def parse(text):
+        value = int(text)
+        if value < low:
+            raise argparse.ArgumentTypeError(f"must be at least {low}, not {value}")
+        return value
+    parse.__name__ = "int"
+    return parse
 
 
 def _ranged(kind, low, high):
@@ -206,13 +209,6 @@ def _ranged(kind, low, high):
     return parse
 
 
-def _non_negative_int(text):
-    value = int(text)
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"must not be negative, not {value}")
-    return value
-
-
 def build_parser():
     summary, _usage, _synopsis, details = __doc__.split("\n\n", 3)
     p = argparse.ArgumentParser(
@@ -223,18 +219,18 @@ def build_parser():
                    "list on stdin) or one .svg file")
     p.add_argument("out_dir", metavar="OUT_DIR", help="folder receiving the images")
     g = p.add_argument_group("scheduling")
-    g.add_argument("--workers", type=_positive_int, default=None, metavar="N",
+    g.add_argument("--workers", type=_int_at_least(1), default=None, metavar="N",
                    help="worker processes of the local cluster (default: the number of cores; "
                    "ignored with --scheduler)")
-    g.add_argument("--threads-per-worker", type=_positive_int, default=1, metavar="T",
+    g.add_argument("--threads-per-worker", type=_int_at_least(1), default=1, metavar="T",
                    help="threads per worker process of the local cluster (default 1; ignored "
                    "with --scheduler)")
     g.add_argument("--scheduler", metavar="ADDRESS",
                    help="an existing Dask scheduler (tcp://host:8786) instead of a local cluster")
-    g.add_argument("--group-bytes", type=_non_negative_int, default=DEFAULT_GROUP_BYTES,
+    g.add_argument("--group-bytes", type=_int_at_least(0), default=DEFAULT_GROUP_BYTES,
                    metavar="B", help="group consecutive files into one task up to B bytes of "
                    f"input (default {DEFAULT_GROUP_BYTES}; 0: one task a file)")
-    g.add_argument("--group-files", type=_non_negative_int, default=0, metavar="N",
+    g.add_argument("--group-files", type=_int_at_least(0), default=0, metavar="N",
                    help="at most N files a task (default 0: automatic, 1/16 of a worker "
                    "thread's share)")
     g.add_argument("--resume", action="store_true",

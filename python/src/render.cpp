@@ -101,6 +101,18 @@ void draw(const Scene& scene, const OutputSize& size, const Request& r, Target& 
     renderer.render(scene, Affine::scale(size.scale), canvas, r.options, r.background, r.threads);
 }
 
+// Calls f with a fresh canvas of the pixel format the request asks for.
+template <class F>
+void with_canvas(const Request& r, const F& f) {
+    if (r.canvas_u8) {
+        Canvas8 c;
+        f(c);
+    } else {
+        Canvas c;
+        f(c);
+    }
+}
+
 py::tuple render_svg(std::optional<std::string> path, std::optional<std::string> text,
                      const std::string& name, std::optional<double> width,
                      std::optional<double> height, std::optional<double> scale,
@@ -131,13 +143,7 @@ py::tuple render_svg(std::optional<std::string> path, std::optional<std::string>
             else
                 straight_rgba(c, std::span<float>(static_cast<float*>(data), n));
         };
-        if (r.canvas_u8) {
-            Canvas8 c;
-            finish(c);
-        } else {
-            Canvas c;
-            finish(c);
-        }
+        with_canvas(r, finish);
     }
     return py::make_tuple(out, warnings);
 }
@@ -167,13 +173,7 @@ py::dict render_file(const std::string& input, const std::string& output,
             error = write_canvas_atomic(output, c);
             encode_ms = ms(Clock::now() - e0);
         };
-        if (r.canvas_u8) {
-            Canvas8 c;
-            finish(c);
-        } else {
-            Canvas c;
-            finish(c);
-        }
+        with_canvas(r, finish);
     }
     if (!error.empty()) os_error(error);
     py::dict stats;

@@ -232,6 +232,20 @@ TEST(Pattern, AViewBoxIsAlignedInTheTile) {
     EXPECT_GT(c.row(8)[28].a, 0.99f) << "the next tile";
 }
 
+TEST(Pattern, AnHrefToNoPatternIsAProblemAndTheChainEndsThere) {
+    // As a gradient's chain (svg/detail/href.h): the pattern keeps its own.
+    std::vector<SvgDiagnostic> w;
+    const Canvas c = render(
+        R"svg(<pattern id="p" href="#nope" patternUnits="userSpaceOnUse" width="10" height="10">
+          <rect width="10" height="10" fill="#000"/></pattern>
+        <rect width="100" height="100" fill="url(#p)"/>)svg",
+        100, &w);
+    ASSERT_EQ(w.size(), 1u);
+    EXPECT_NE(w[0].message.find("href '#nope' names no pattern"), std::string::npos)
+        << w[0].message;
+    EXPECT_GT(c.row(50)[50].a, 0.99f);
+}
+
 TEST(Pattern, ATinyTileIsItsMeanColor) {
     // Tiles of 1e-6 px: the tile is drawn into one pixel, whose exact-area
     // coverage is the tile's mean (here a quarter covered).

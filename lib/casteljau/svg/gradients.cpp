@@ -1,6 +1,7 @@
 #include "casteljau/svg/detail/gradients.h"
 
 #include "casteljau/svg/color.h"
+#include "casteljau/svg/detail/href.h"
 #include "casteljau/svg/style.h"
 #include "casteljau/svg/transform_list.h"
 
@@ -9,7 +10,6 @@
 #include <cmath>
 #include <cstring>
 #include <optional>
-#include <set>
 #include <string_view>
 #include <vector>
 
@@ -20,12 +20,6 @@ namespace {
 bool is_gradient(const pugi::xml_node& n) {
     return std::strcmp(n.name(), "linearGradient") == 0 ||
            std::strcmp(n.name(), "radialGradient") == 0;
-}
-
-const char* href_of(const pugi::xml_node& n) {
-    if (const pugi::xml_attribute a = n.attribute("href")) return a.value();
-    if (const pugi::xml_attribute a = n.attribute("xlink:href")) return a.value();
-    return nullptr;
 }
 
 std::string_view trim(std::string_view s) {
@@ -91,28 +85,13 @@ GradientRef GradientIndex::build(pugi::xml_node node) {
     const auto problem = [&](const pugi::xml_node& n, std::string what) {
         problems_.push_back({n, std::move(what)});
     };
-    // The href chain, cut at a missing target, at a link that would close a
-    // cycle, and beyond the length limit.
-    std::vector<pugi::xml_node> chain{node};
-    std::set<const void*> seen{node.internal_object()};
-    while (const char* href = href_of(chain.back())) {
-        const auto it = href[0] == '#' ? by_id_.find(href + 1) : by_id_.end();
-        if (it == by_id_.end() || !is_gradient(it->second)) {
-            problem(chain.back(), std::string("href '") + href + "' names no gradient; ignored");
-            break;
-        }
-        if (!seen.insert(it->second.internal_object()).second) {
-            problem(chain.back(),
-                    std::string("href '") + href + "' makes a cycle; the chain ends here");
-            break;
-        }
-        if (int(chain.size()) >= kMaxHrefChain) {
-            problem(chain.back(), "the href chain is longer than " + std::to_string(kMaxHrefChain) +
-                                      " links (the limit); it ends here");
-            break;
-        }
-        chain.push_back(it->second);
-    }
+    const std::vector<pugi::xml_node> chain = href_chain(
+        node, "gradient",
+        [&](const char* id) {
+            const auto it = by_id_.find(id);
+            return it == by_id_.end() ? pugi::xml_node() : it->second;
+        },
+        is_gradient, problem);
     const auto attr = [&](const char* name) -> pugi::xml_attribute {
         for (const pugi::xml_node& n : chain)
             if (const pugi::xml_attribute a = n.attribute(name)) return a;

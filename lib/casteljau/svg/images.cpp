@@ -133,8 +133,7 @@ const Reader::ImageSource& Reader::image_source(const pugi::xml_node& n, const s
 }
 
 void Reader::image(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out) {
-    const char* href =
-        n.attribute("href") ? n.attribute("href").value() : n.attribute("xlink:href").value();
+    const char* href = href_of(n);
     if (!style.visible || !href[0]) return;
     const ImageSource& src = image_source(n, href);
     if (!src.raster && !src.svg) return;

@@ -18,8 +18,7 @@ namespace casteljau::svg_detail {
 // problem, and nothing is drawn.
 void Reader::use(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out,
                  int depth) {
-    const char* href =
-        n.attribute("href") ? n.attribute("href").value() : n.attribute("xlink:href").value();
+    const char* href = href_of(n);
     const pugi::xml_node target = href[0] == '#' ? by_id(href + 1) : pugi::xml_node();
     if (!target) {
         if (href[0]) problem(n, std::string("href '") + href + "' names no element; skipped");
@@ -135,8 +134,7 @@ std::size_t Reader::expanded_size(const pugi::xml_node& n, int depth) {
     sizes_[n.internal_object()] = 1; // a cycle back to n: the walk skips it
     std::size_t total = 1;
     if (std::string_view(n.name()) == "use") {
-        const char* href =
-            n.attribute("href") ? n.attribute("href").value() : n.attribute("xlink:href").value();
+        const char* href = href_of(n);
         if (const pugi::xml_node t = href[0] == '#' ? by_id(href + 1) : pugi::xml_node())
             total += expanded_size(t, depth + 1);
     } else if (!silently_skipped(n.name())) {

@@ -17,18 +17,13 @@
 // device resolution (render/renderer.h), so it is as exact as any shape.
 // Patterns built without the painted element's box (userSpaceOnUse units
 // throughout) are built once and shared.
+#include "casteljau/svg/detail/href.h"
 #include "casteljau/svg/detail/reader_impl.h"
 #include "casteljau/svg/transform_list.h"
 
 namespace casteljau::svg_detail {
 
 namespace {
-
-const char* href_of(const pugi::xml_node& n) {
-    if (const pugi::xml_attribute a = n.attribute("href")) return a.value();
-    if (const pugi::xml_attribute a = n.attribute("xlink:href")) return a.value();
-    return nullptr;
-}
 
 bool has_element_children(const pugi::xml_node& n) {
     for (const pugi::xml_node& c : n.children())
@@ -38,31 +33,14 @@ bool has_element_children(const pugi::xml_node& n) {
 
 } // namespace
 
-// The href chain from `pat`: patterns only, no cycle, at most kMaxHrefChain.
-std::vector<pugi::xml_node> Reader::pattern_chain(const pugi::xml_node& pat) {
-    std::vector<pugi::xml_node> chain{pat};
-    while (const char* href = href_of(chain.back())) {
-        const pugi::xml_node next = href[0] == '#' ? by_id(href + 1) : pugi::xml_node();
-        if (!next || std::strcmp(next.name(), "pattern") != 0) break;
-        if (std::find(chain.begin(), chain.end(), next) != chain.end()) {
-            problem(chain.back(), std::string("href '") + href + "' makes a cycle; it ends here");
-            break;
-        }
-        if (int(chain.size()) >= kMaxHrefChain) {
-            problem(chain.back(), "the href chain is longer than " + std::to_string(kMaxHrefChain) +
-                                      "; it ends here");
-            break;
-        }
-        chain.push_back(next);
-    }
-    return chain;
-}
-
 std::shared_ptr<const Pattern> Reader::pattern(const pugi::xml_node& pat, const Path& path,
                                                int depth) {
     if (const auto it = patterns_.find(pat.internal_object()); it != patterns_.end())
         return it->second;
-    const std::vector<pugi::xml_node> chain = pattern_chain(pat);
+    const std::vector<pugi::xml_node> chain = href_chain(
+        pat, "pattern", [&](const char* id) { return by_id(id); },
+        [](const pugi::xml_node& n) { return std::strcmp(n.name(), "pattern") == 0; },
+        [&](const pugi::xml_node& n, const std::string& what) { problem(n, what); });
     const auto attr = [&](const char* name) {
         for (const pugi::xml_node& p : chain)
             if (const pugi::xml_attribute a = p.attribute(name)) return a;

@@ -35,8 +35,6 @@
 
 namespace casteljau::svg_detail {
 
-inline constexpr int kMaxHrefChain = 64;
-
 struct GradientRef {
     std::shared_ptr<const Gradient> gradient; // null: not a gradient, or unusable
     std::string warning;                      // why, when null

@@ -8,6 +8,7 @@
 #include "casteljau/svg/css.h"
 #include "casteljau/svg/detail/css_pugi.h"
 #include "casteljau/svg/detail/gradients.h"
+#include "casteljau/svg/detail/href.h"
 #include "casteljau/svg/marker_vertices.h"
 #include "casteljau/svg/reader.h"
 #include "casteljau/svg/shapes.h"
@@ -201,7 +202,6 @@ class Reader {
     void image(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out);
     // Patterns (svg/patterns.cpp): null when disabled (paints nothing).
     std::shared_ptr<const Pattern> pattern(const pugi::xml_node& pat, const Path& path, int depth);
-    std::vector<pugi::xml_node> pattern_chain(const pugi::xml_node& pat);
     std::optional<double> non_negative(const pugi::xml_node& n, const char* attr,
                                        std::optional<double> v);
     Path geometry(const pugi::xml_node& n, std::string_view name, const LengthContext& ctx);
