@@ -19,7 +19,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"; shift || true
 targets=("$@")
-[[ ${#targets[@]} -gt 0 ]] || targets=(path_data svg_read svg_render patch_read patch_render)
+[[ ${#targets[@]} -gt 0 ]] || targets=(path_data svg_read svg_render patch_read patch_render filter_graph)
 
 # -g1: line tables only, enough for the sanitizers' file:line stack traces.
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \

@@ -302,7 +302,7 @@ TEST(LayerBudget, OverItAClippedGroupIsNotDrawnAndAnOpaqueOneIsDrawnStraight) {
     EXPECT_NEAR(c.row(30)[30].b, 0.5f, 1e-6f);
 }
 
-// Layers for clips, masks, blend modes and pattern tiles keep bands (and
+// Layers for clips, masks, blend modes, pattern tiles and filters keep bands (and
 // threads) bit-identical to one whole-frame render.
 template <class C>
 class EffectFormats : public ::testing::Test {};
@@ -311,7 +311,7 @@ TYPED_TEST_SUITE(EffectFormats, Formats);
 
 TYPED_TEST(EffectFormats, BandsAreBitIdenticalWithEveryLayer) {
     for (const char* file : {"clip_paths.svg", "masks.svg", "patterns.svg", "blend_modes.svg",
-                             "overflow_viewports.svg"}) {
+                             "overflow_viewports.svg", "filters.svg"}) {
         const SvgResult doc = read_svg_file(std::string(CASTELJAU_TESTS "/svg/agreement/") + file);
         ASSERT_TRUE(doc.scene) << doc.error;
         // Scaled so that the frame has several bands of 128 rows.

@@ -1,5 +1,6 @@
 #include "casteljau/render/renderer.h"
 
+#include "casteljau/filter/run.h"
 #include "casteljau/geom/pixel_index.h"
 #include "casteljau/paint/blend.h"
 #include "casteljau/paint/mask.h"
@@ -95,6 +96,7 @@ void Renderer::begin(const Affine& view, const RenderOptions& options, const Pix
     layers_used_ = 0;
     layer_bytes_ = 0;
     layer_sizes_.clear();
+    filter_depth_ = 0;
 }
 
 Rect Renderer::reach_box(const Shape& s, const Affine& view) {
@@ -109,7 +111,13 @@ Rect Renderer::node_reach_box(const Node& n, const Affine& view) {
 
 Rect Renderer::group_reach_box(const Group& g, const Affine& view) {
     Rect r = Rect::empty();
-    for (const Node& c : g.children) r = r.united(node_reach_box(c, view));
+    if (!g.filters.empty()) { // a filter draws over its region, whatever the content's box
+        const Filter& f = *g.filters.back();
+        const PixelRect p = filter_pixel_region(f.graph, view * f.transform);
+        if (p.x1 > p.x0 && p.y1 > p.y0) r = {double(p.x0), double(p.y0), double(p.x1), double(p.y1)};
+    } else {
+        for (const Node& c : g.children) r = r.united(node_reach_box(c, view));
+    }
     // Outside its content, a clip or a mask is 0: nothing shows there.
     if (g.clip) r = r.intersected(group_reach_box(g.clip->content, view));
     if (g.mask) r = r.intersected(group_reach_box(g.mask->content, view));
@@ -166,8 +174,11 @@ void Renderer::draw_group(const Group& g, Target& target) {
         // Over the layer budget, l is the target: drawn straight, with its
         // opacity and blend mode left out, or, clipped or masked, not at
         // all (what a clip hides must not show).
-        if (&l == &target && (g.clip || g.mask)) return;
-        draw_children(g, l);
+        if (&l == &target && (g.clip || g.mask || !g.filters.empty())) return;
+        if (g.filters.empty())
+            draw_children(g, l);
+        else if (!filter_layer(g, l))
+            return;
         if (&l == &target) return;
         if (g.clip) mask_layer(*g.clip, l);
         if (g.mask) mask_layer(*g.mask, l);
@@ -390,6 +401,105 @@ bool Renderer::prepare_pattern(const Pattern& p, const Affine& m, float opacity)
     return image_shader_.prepare(
         tile_, to_device * Affine::scale(p.width / tile_.width, p.height / tile_.height), opacity,
         p.smooth, p.repeat);
+}
+
+
+namespace {
+
+// The pixels of `c` into `img` (its box: the canvas's place), as float.
+template <class Pixel>
+void to_filter_image(const BasicCanvas<Pixel>& c, FilterImage& img) {
+    img.reset({c.origin_x(), c.origin_y(), c.origin_x() + c.width(), c.origin_y() + c.height()},
+              false);
+    for (int y = 0; y < c.height(); ++y) {
+        const Pixel* row = c.row(y);
+        Premul* out = &img.at(0, y);
+        for (int x = 0; x < c.width(); ++x) out[x] = to_premul(row[x]);
+    }
+}
+
+PixelRect intersect(const PixelRect& a, const PixelRect& b) {
+    return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1),
+            std::min(a.y1, b.y1)};
+}
+
+PixelRect grown(const PixelRect& r, double by) {
+    const int k = int(std::min(by, double(1 << 28)));
+    return {r.x0 - k, r.y0 - k, r.x1 + k, r.y1 + k};
+}
+
+} // namespace
+
+template <class Target>
+bool Renderer::filter_layer(const Group& g, Target& layer) {
+    // One window for the whole chain: the union of the filters' regions,
+    // cut to the layer grown by every filter's reach (so the layer's pixels
+    // come out exactly as from an uncut window: bands agree bit for bit),
+    // and to the frame grown by as much, at most kMaxFilterMargin.
+    double reach = 0;
+    PixelRect regions{};
+    for (const auto& f : g.filters) {
+        const Affine m = view_ * f->transform;
+        reach += filter_reach(f->graph, m);
+        const PixelRect r = filter_pixel_region(f->graph, m);
+        regions = regions.width() > 0 ? PixelRect{std::min(regions.x0, r.x0),
+                                                  std::min(regions.y0, r.y0),
+                                                  std::max(regions.x1, r.x1),
+                                                  std::max(regions.y1, r.y1)}
+                                      : r;
+    }
+    const PixelRect target{layer.origin_x(), layer.origin_y(), layer.origin_x() + layer.width(),
+                           layer.origin_y() + layer.height()};
+    const PixelRect frame = grown(frame_, std::min(reach, double(kMaxFilterMargin)));
+    const PixelRect window = intersect(intersect(regions, frame), grown(target, reach));
+    if (window.width() <= 0 || window.height() <= 0) return true; // nothing to draw here
+    Target* src = acquire_layer<Target>(window.width(), window.height(), window.x0, window.y0);
+    if (!src) return false;
+    if (filter_buffers_.size() <= filter_depth_)
+        filter_buffers_.push_back(std::make_unique<FilterBuffers>());
+    FilterBuffers& buf = *filter_buffers_[filter_depth_++]; // nested filters take the next
+    const PixelRect saved = frame_;
+    frame_ = frame; // the content just outside the frame is drawn too
+    draw_children(g, *src);
+    to_filter_image(*src, buf.source);
+    release_layer();
+    bool ok = true;
+    for (const auto& f : g.filters) {
+        const std::size_t n = f->images.size();
+        buf.inputs.resize(std::max(buf.inputs.size(), n + 2));
+        for (std::size_t i = 0; i < n; ++i) draw_filter_input(f->images[i], window, buf.inputs[i]);
+        draw_filter_input(f->fill_paint, window, buf.inputs[n]);
+        draw_filter_input(f->stroke_paint, window, buf.inputs[n + 1]);
+        const FilterSources io{&buf.source, {buf.inputs.data(), n}, &buf.inputs[n],
+                               &buf.inputs[n + 1]};
+        const auto t = stage_start(*options_);
+        ok = ok && run_filter(f->graph, view_ * f->transform, io);
+        add_stage_ms(stats_.raster_ms, *options_, t);
+    }
+    frame_ = saved;
+    --filter_depth_;
+    if (!ok) return false;
+    const PixelRect out = intersect(window, target);
+    for (int y = out.y0; y < out.y1; ++y) {
+        auto* row = layer.row(y - layer.origin_y());
+        for (int x = out.x0; x < out.x1; ++x)
+            row[x - layer.origin_x()] = pixel_of<typename Target::pixel_type>(
+                buf.source.at(x - window.x0, y - window.y0));
+    }
+    return true;
+}
+
+void Renderer::draw_filter_input(const Group& content, const PixelRect& window, FilterImage& img) {
+    Canvas* c = content.children.empty()
+                    ? nullptr
+                    : acquire_layer<Canvas>(window.width(), window.height(), window.x0, window.y0);
+    if (!c) { // nothing to draw, or over the layer budget: transparent
+        img.reset(window, false);
+        return;
+    }
+    draw_group(content, *c);
+    to_filter_image(*c, img);
+    release_layer();
 }
 
 // The two pixel formats a renderer draws onto.

@@ -6,7 +6,10 @@
 // content drawn into layers of the same place (paint/mask.h), and
 // composited with the group's opacity and blend mode (paint/blend.h).
 // Patterns are drawn into a tile at the device resolution, then painted as
-// an image (paint/image_shader.h). The renderer keeps its edge list,
+// an image (paint/image_shader.h). A filtered group is drawn into a layer
+// over its filter region, grown by how far the filter reads (filter/run.h)
+// and cut to the frame grown by at most kMaxFilterMargin, and the filter
+// runs on it before the clip and mask. The renderer keeps its edge list,
 // rasterizer buffers, layers and tiles between shapes and frames: in steady
 // state a frame allocates nothing new.
 //
@@ -19,6 +22,7 @@
 // most kMaxTilePixels each, one per pattern nesting level.
 #pragma once
 
+#include "casteljau/filter/filter_image.h"
 #include "casteljau/flatten/path_flatten.h"
 #include "casteljau/paint/canvas.h"
 #include "casteljau/paint/gradient.h"
@@ -49,6 +53,11 @@ inline constexpr long kMaxTilePixels = 1L << 20;
 /// renderer: 512 MiB, sixteen 2048 x 1024 float layers, or a float band of
 /// a 16384 px wide frame (kBandRows rows, 32 MiB) sixteen deep.
 inline constexpr std::size_t kMaxLayerBytes = std::size_t(512) << 20;
+
+/// How far beyond the frame (device px) a filter's input is drawn: a blur
+/// or offset pulls that much of what lies outside the frame into it.
+/// (resvg draws nothing outside the canvas; browsers draw the whole region.)
+inline constexpr int kMaxFilterMargin = 256;
 
 /// How to render: flattening, antialiasing, statistics, gradient interpolation.
 struct RenderOptions {
@@ -125,6 +134,12 @@ class Renderer {
     /// target, composited with `opacity` and `blend`.
     template <class Target, class Draw>
     void in_layer(const Rect& box, Target& target, float opacity, BlendMode blend, Draw draw);
+    /// Draws the group's children and runs its filters into `layer`; false
+    /// when a filter is in error or over a limit (the group is not drawn).
+    template <class Target>
+    bool filter_layer(const Group& g, Target& layer);
+    /// Draws `content` over `window` into `img` (float, sRGB).
+    void draw_filter_input(const Group& content, const PixelRect& window, FilterImage& img);
     /// Scales `layer` by the mask's value, from its content drawn at the same place.
     template <class Target>
     void mask_layer(const Mask& mask, Target& layer);
@@ -165,6 +180,14 @@ class Renderer {
     RasterImage tile_;
     const Pattern* tile_of_ = nullptr;
     Affine tile_map_;
+    /// A filtered group's layer in float, and its feImage, FillPaint and
+    /// StrokePaint drawings: one set per level of filters within filters.
+    struct FilterBuffers {
+        FilterImage source;
+        std::vector<FilterImage> inputs;
+    };
+    std::vector<std::unique_ptr<FilterBuffers>> filter_buffers_;
+    std::size_t filter_depth_ = 0;
     Affine view_;
     PixelRect frame_;
     const RenderOptions* options_ = nullptr;

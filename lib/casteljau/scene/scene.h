@@ -16,9 +16,13 @@
 // mask on a clip path or a mask is the content group's own clip or mask.
 // A pattern's content has its transforms to the pattern's tile space
 // instead: it is drawn once per paint into a tile at device resolution.
+// Filters are graphs of pixel operations on a group's layer (filter/graph.h),
+// run before its clip, mask and opacity (Filter Effects 1, 3, and CSS
+// Masking 1, 1).
 #pragma once
 
 #include "casteljau/curve/path.h"
+#include "casteljau/filter/graph.h"
 #include "casteljau/paint/blend.h"
 #include "casteljau/paint/color.h"
 #include "casteljau/paint/gradient.h"
@@ -84,6 +88,7 @@ struct Shape {
 
 struct Node;
 struct Mask;
+struct Filter;
 
 /// Children drawn together into a layer when any of opacity, clip, mask,
 /// blend mode or isolation asks for one; then clipped, masked, and
@@ -99,10 +104,13 @@ struct Group {
     bool isolate = false;
     std::shared_ptr<const Mask> clip = nullptr; ///< a clip path (an alpha mask); none when null
     std::shared_ptr<const Mask> mask = nullptr; ///< a mask; none when null
+    /// filter: applied in order, each to the result of the one before.
+    std::vector<std::shared_ptr<const Filter>> filters = {};
 
     /// Whether the children must be drawn into a layer first.
     bool needs_layer() const {
-        return opacity < 1 || blend != BlendMode::Normal || isolate || clip || mask;
+        return opacity < 1 || blend != BlendMode::Normal || isolate || clip || mask ||
+               !filters.empty();
     }
 };
 
@@ -116,6 +124,16 @@ struct Node {
 struct Mask {
     MaskKind kind = MaskKind::Alpha;
     Group content; ///< transforms to scene device space, as every shape's
+};
+
+/// A filter on a group: its graph in the filtered element's user space, and
+/// the drawings that its feImage, FillPaint and StrokePaint inputs read.
+struct Filter {
+    FilterGraph graph;
+    Affine transform;          ///< the graph's user space -> scene device space
+    std::vector<Group> images; ///< feImage content (ImageInput::index), to scene device space
+    Group fill_paint;          ///< FillPaint: the filter region painted with the element's fill
+    Group stroke_paint;        ///< StrokePaint: the same with its stroke's paint
 };
 
 /// A paint that repeats a tile over the plane: a pattern's drawn content, or

@@ -128,6 +128,8 @@ void Reader::apply_effects(const pugi::xml_node& n, const ElementProps& props, c
     };
     g.clip = effect(n, props.clip_path, true, m, bbox, depth);
     g.mask = effect(n, props.mask, false, m, bbox, depth);
+    if (!props.filter.empty() && !apply_filters(n, props, m, g, bbox, depth))
+        g = Group{}; // not drawn: nothing left that needs a layer, dropped by add_group
 }
 
 std::shared_ptr<const Mask> Reader::clip_path(const pugi::xml_node& cp, const Affine& m,

@@ -1,5 +1,7 @@
 #include "casteljau/svg/color.h"
 
+#include "casteljau/svg/detail/ascii.h"
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -180,11 +182,7 @@ constexpr bool sorted_by_name() {
 }
 static_assert(sorted_by_name(), "kNamed must be sorted for std::lower_bound");
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-    return s;
-}
+using svg_detail::trim;
 
 int hex(char c) {
     if (c >= '0' && c <= '9') return c - '0';

@@ -1,6 +1,7 @@
 #include "casteljau/svg/detail/gradients.h"
 
 #include "casteljau/svg/color.h"
+#include "casteljau/svg/detail/ascii.h"
 #include "casteljau/svg/detail/href.h"
 #include "casteljau/svg/style.h"
 #include "casteljau/svg/transform_list.h"
@@ -22,20 +23,8 @@ bool is_gradient(const pugi::xml_node& n) {
            std::strcmp(n.name(), "radialGradient") == 0;
 }
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-    return s;
-}
-
 // CSS keywords are ASCII case-insensitive.
-bool is_keyword(std::string_view v, std::string_view keyword) {
-    return v.size() == keyword.size() &&
-           std::equal(v.begin(), v.end(), keyword.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) ==
-                      std::tolower(static_cast<unsigned char>(y));
-           });
-}
+bool is_keyword(std::string_view v, std::string_view keyword) { return iequals(v, keyword); }
 
 // An opacity: a number or a percentage, clamped to [0, 1].
 std::optional<double> parse_alpha(std::string_view v) {

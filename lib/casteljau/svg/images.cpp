@@ -47,6 +47,14 @@ Group moved(const Group& g, const Affine& m) {
     for (std::shared_ptr<const Mask>* mask : {&out.clip, &out.mask})
         if (*mask)
             *mask = std::make_shared<const Mask>(Mask{(*mask)->kind, moved((*mask)->content, m)});
+    for (const auto& f : g.filters) {
+        auto c = std::make_shared<Filter>(*f);
+        c->transform = m * f->transform;
+        for (Group& image : c->images) image = moved(image, m);
+        c->fill_paint = moved(c->fill_paint, m);
+        c->stroke_paint = moved(c->stroke_paint, m);
+        out.filters.push_back(std::move(c));
+    }
     return out;
 }
 

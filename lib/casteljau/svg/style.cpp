@@ -2,6 +2,8 @@
 
 #include "casteljau/paint/blend.h"
 #include "casteljau/svg/color.h"
+#include "casteljau/svg/detail/ascii.h"
+#include "casteljau/svg/filter_functions.h"
 
 #include <algorithm>
 #include <cctype>
@@ -15,18 +17,8 @@ namespace casteljau {
 
 namespace {
 
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-    return s;
-}
-
-bool iequals(std::string_view a, std::string_view b) {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) ==
-                      std::tolower(static_cast<unsigned char>(y));
-           });
-}
+using svg_detail::iequals;
+using svg_detail::trim;
 
 std::optional<PaintSpec> parse_paint(std::string_view v) {
     v = trim(v);
@@ -419,6 +411,29 @@ std::string apply_property(std::string_view name, std::string_view value, const 
         return set(props.mask_alpha, false,
                    lookup<bool>(value, {{"luminance", false}, {"alpha", true}}),
                    "luminance or alpha");
+    if (name == "color-interpolation-filters")
+        return set(s.filters_linear, parent.filters_linear,
+                   lookup<bool>(value, {{"auto", false}, {"sRGB", false}, {"linearRGB", true}}),
+                   "auto, sRGB or linearRGB");
+    if (name == "filter") {
+        if (!parse_filter_list(value, ctx)) return bad(name, value, "none, url(#id) or filter functions");
+        props.filter = value == "none" ? std::string() : std::string(value);
+        return "";
+    }
+    // A color or currentColor (nullopt inside), or nothing when invalid.
+    const auto color_or_current = [&](std::string_view v) -> std::optional<std::optional<Rgba>> {
+        if (iequals(v, "currentColor")) return std::optional<Rgba>();
+        if (const auto c = parse_color(v)) return std::optional<Rgba>(*c);
+        return std::nullopt;
+    };
+    if (name == "flood-color")
+        return set(props.flood_color, std::optional<Rgba>(Rgba{0, 0, 0, 1}), color_or_current(value),
+                   "a color");
+    if (name == "flood-opacity")
+        return set(props.flood_opacity, 1.0f, parse_opacity(value), "an opacity");
+    if (name == "lighting-color")
+        return set(props.lighting_color, std::optional<Rgba>(Rgba{1, 1, 1, 1}),
+                   color_or_current(value), "a color");
     if (name == "color-interpolation")
         return set(s.linear_rgb, parent.linear_rgb,
                    lookup<bool>(value, {{"auto", false}, {"sRGB", false}, {"linearRGB", true}}),

@@ -77,6 +77,8 @@ struct StyleState {
     FillRule clip_rule = FillRule::NonZero;
     /// color-interpolation: linearRGB (a mask's luminance is then taken in linear light).
     bool linear_rgb = false;
+    /// color-interpolation-filters: linearRGB (initial), else sRGB (auto too).
+    bool filters_linear = true;
     /// image-rendering: false for optimizeSpeed, pixelated and crisp-edges
     /// (an image's nearest pixel, not a bilinear blend).
     bool smooth_images = true;
@@ -107,6 +109,15 @@ struct ElementProps {
     /// overflow hides it, as top, right, bottom, left offsets from the
     /// viewport's top-left corner; nullopt for an edge of the viewport (auto).
     std::array<std::optional<double>, 4> clip_rect;
+    /// filter (Filter Effects 1, 11): the value as written, checked by
+    /// parse_filter_list (svg/filter_functions.h); "" for none.
+    std::string filter;
+    /// flood-color and flood-opacity (15.14), lighting-color (15.16): on
+    /// filter primitives, not inherited; a color that is currentColor is
+    /// nullopt (the reader takes the element's color).
+    std::optional<Rgba> flood_color = Rgba{0, 0, 0, 1};
+    float flood_opacity = 1;
+    std::optional<Rgba> lighting_color = Rgba{1, 1, 1, 1};
 };
 
 /// Applies one property. Returns "" when applied or unknown, otherwise what is

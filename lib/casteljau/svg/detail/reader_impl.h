@@ -46,7 +46,7 @@ inline bool silently_skipped(std::string_view n) {
 // through use) is unknown to SVG, and an unknown element is not rendered
 // (SVG 2, 5.9 "unknown elements"): no warning.
 inline bool unsupported(std::string_view n) {
-    static const std::set<std::string_view> names = {"text", "filter", "foreignObject"};
+    static const std::set<std::string_view> names = {"text", "foreignObject"};
     return names.count(n) != 0;
 }
 
@@ -54,6 +54,12 @@ inline bool is_shape(std::string_view n) {
     return n == "path" || n == "rect" || n == "circle" || n == "ellipse" || n == "line" ||
            n == "polyline" || n == "polygon";
 }
+
+// A filter's primitiveUnits, and the box objectBoundingBox refers to.
+struct PrimitiveUnits {
+    bool obb = false;
+    Rect bbox;
+};
 
 class Reader {
   public:
@@ -136,7 +142,7 @@ class Reader {
     static void add_group(Group& out, Group g) {
         if (!g.needs_layer())
             std::move(g.children.begin(), g.children.end(), std::back_inserter(out.children));
-        else if (!g.children.empty())
+        else if (!g.children.empty() || !g.filters.empty()) // a filter draws on empty too
             out.children.push_back(Node{std::move(g)});
     }
     void element(const pugi::xml_node& n, const StyleState& parent_style, const Affine& ctm,
@@ -148,7 +154,8 @@ class Reader {
                          Group& out, int depth);
     // clip-path, mask, mix-blend-mode, isolation (svg/clip_mask.cpp).
     static bool has_effects(const ElementProps& p) {
-        return !p.clip_path.empty() || !p.mask.empty() || p.blend != BlendMode::Normal || p.isolate;
+        return !p.clip_path.empty() || !p.mask.empty() || p.blend != BlendMode::Normal ||
+               p.isolate || !p.filter.empty();
     }
     void apply_effects(const pugi::xml_node& n, const ElementProps& props, const Affine& m,
                        Group& g, int depth);
@@ -160,6 +167,23 @@ class Reader {
                                           const BoxOf& bbox, int depth);
     std::shared_ptr<const Mask> mask(const pugi::xml_node& mk, const Affine& m, const BoxOf& bbox,
                                      int depth);
+    // filter (svg/filters.cpp): the group's filters; false when the element
+    // is not to be drawn (a reference to no filter, a filter in error).
+    bool apply_filters(const pugi::xml_node& n, const ElementProps& props, const Affine& m,
+                       Group& g, const BoxOf& bbox, int depth);
+    std::shared_ptr<Filter> filter_element(const pugi::xml_node& n, const pugi::xml_node& f,
+                                           const Affine& m, const BoxOf& bbox, int depth);
+    // One primitive's operation (svg/filter_primitives.cpp); nullopt when
+    // the element is not a primitive. `f` gets the drawings it needs.
+    void read_primitives(const pugi::xml_node& filter, const PrimitiveUnits& u, const Affine& m,
+                         Filter& f, int depth);
+    FilterOp image_input(const pugi::xml_node& e, const StyleState& style, const Affine& m,
+                         Filter& f, int depth);
+    Rect subregion(const pugi::xml_node& e, const PrimitiveUnits& u, const FilterPrimitive& p,
+                   const FilterGraph& g, const StyleState& style);
+    std::optional<FilterOp> filter_op(const pugi::xml_node& p, const PrimitiveUnits& u,
+                                      const StyleState& style, const ElementProps& props,
+                                      const Affine& m, Filter& f, int depth);
     // The box of what a group draws (its shapes' paths, strokes apart), in
     // the coordinates `to_user` maps device space to.
     static Rect user_bbox(const Group& g, const Affine& to_user);

@@ -1,0 +1,367 @@
+// Executing a filter graph: inputs resolved and converted to each
+// primitive's color space, primitives dispatched to their families'
+// files, results freed after their last reader.
+//
+// Color spaces (Filter Effects 1, 17.7): each primitive converts its inputs
+// to its own color-interpolation-filters space and tags its result with
+// it; the final result is converted back to sRGB. Primitives that only move
+// pixels (feOffset, feTile, feImage) keep their input's space, so a chain of
+// them adds no rounding. feDisplacementMap converts only its map (in2) and
+// keeps the space of `in` (15.12). SourceAlpha and the transparent
+// BackgroundImage are the same in both spaces.
+//
+// Device mapping of parameters: sx, sy are the lengths of the user axes on
+// the device (|M (1, 0)|, |M (0, 1)|); a standard deviation, radius or
+// scale along x is multiplied by sx, along y by sy; offsets are mapped as
+// vectors; light positions as points, their z by sqrt(sx sy).
+#include "casteljau/filter/run.h"
+
+#include "casteljau/filter/blur.h"
+#include "casteljau/filter/color_space.h"
+#include "casteljau/filter/color_transform.h"
+#include "casteljau/filter/compose.h"
+#include "casteljau/filter/morphology.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace casteljau {
+
+namespace {
+
+template <class... F>
+struct Overloaded : F... {
+    using F::operator()...;
+};
+
+struct Scales {
+    double sx, sy;
+    explicit Scales(const Affine& m) : sx(std::hypot(m.a, m.b)), sy(std::hypot(m.c, m.d)) {}
+};
+
+// The subregion of `px` (device) within the window `w`, in window coordinates.
+Subregion window_part(const PixelRect& px, const PixelRect& w) {
+    return {std::clamp(px.x0, w.x0, w.x1) - w.x0, std::clamp(px.y0, w.y0, w.y1) - w.y0,
+            std::clamp(px.x1, w.x0, w.x1) - w.x0, std::clamp(px.y1, w.y0, w.y1) - w.y0};
+}
+
+// How far one primitive reads from the pixel it writes (device px).
+double reach_of(const FilterPrimitive& p, const Scales& s) {
+    constexpr double kFar = std::numeric_limits<double>::infinity();
+    const double scale = std::max(s.sx, s.sy);
+    return std::visit(
+        Overloaded{
+            [&](const GaussianBlur& b) {
+                if (b.edge != EdgeMode::None) return kFar;
+                return double(std::max(blur_reach(b.sx * s.sx), blur_reach(b.sy * s.sy)));
+            },
+            [&](const Offset& o) { return std::hypot(o.dx, o.dy) * scale + 1; },
+            [&](const Morphology& m) { return std::ceil(std::max(m.rx, m.ry) * scale); },
+            [&](const Convolve& c) {
+                if (c.m.edge != EdgeMode::None) return kFar;
+                return double(std::max(c.m.order_x, c.m.order_y));
+            },
+            [&](const Displacement& d) { return std::ceil(std::fabs(d.scale) * scale / 2) + 1; },
+            [&](const Tile&) { return kFar; },
+            [&](const LightingOp&) { return 1.0; },
+            [&](const DropShadow& d) {
+                return double(std::max(blur_reach(d.sx * s.sx), blur_reach(d.sy * s.sy))) +
+                       std::hypot(d.dx, d.dy) * scale + 1;
+            },
+            [&](const auto&) { return 0.0; },
+        },
+        p.op);
+}
+
+// The images of one run, with their storage reused as results are freed.
+class Results {
+  public:
+    Results(std::size_t n, const PixelRect& window) : images_(n), window_(window) {}
+    FilterImage& make(std::size_t i, bool linear) {
+        if (!spare_.empty()) {
+            images_[i] = std::move(spare_.back());
+            spare_.pop_back();
+        }
+        images_[i].reset(window_, linear);
+        return images_[i];
+    }
+    void free(std::size_t i) {
+        spare_.push_back(std::move(images_[i]));
+        images_[i] = {};
+    }
+    FilterImage& operator[](std::size_t i) { return images_[i]; }
+
+  private:
+    std::vector<FilterImage> images_, spare_;
+    PixelRect window_;
+};
+
+// A primitive's input `index`, in the space `linear` when `convert`.
+class Inputs {
+  public:
+    Inputs(const FilterSources& io, Results& results) : io_(io), results_(results) {}
+    const FilterImage& get(int index, bool linear, bool convert, FilterImage& scratch) {
+        const FilterImage* img = find(index, linear);
+        if (!convert || img->linear == linear) return *img;
+        scratch = *img;
+        convert_space(scratch, linear);
+        return scratch;
+    }
+
+  private:
+    const FilterImage* find(int index, bool linear) {
+        using namespace filter_input;
+        if (index >= 0) return &results_[std::size_t(index)];
+        if (index == kSourceGraphic) return io_.source;
+        if (index == kSourceAlpha) {
+            if (alpha_.px.empty()) {
+                alpha_.reset(io_.source->box, linear);
+                for (std::size_t i = 0; i < alpha_.px.size(); ++i)
+                    alpha_.px[i].a = io_.source->px[i].a;
+            }
+            alpha_.linear = linear; // alpha alone is the same in both spaces
+            return &alpha_;
+        }
+        const FilterImage* paint = index == kFillPaint     ? io_.fill_paint
+                                   : index == kStrokePaint ? io_.stroke_paint
+                                                           : nullptr;
+        if (paint) return paint;
+        if (empty_.px.empty()) empty_.reset(io_.source->box, linear);
+        empty_.linear = linear;
+        return &empty_;
+    }
+    const FilterSources& io_;
+    Results& results_;
+    FilterImage alpha_, empty_;
+};
+
+} // namespace
+
+PixelRect device_pixels(const Rect& r, const Affine& m) {
+    if (r.is_empty()) return {};
+    const Rect b = Rect::from_points(m * r.min(), m * r.max())
+                       .united(m * Point{r.x0, r.y1})
+                       .united(m * Point{r.x1, r.y0});
+    // Bounded so that the pixel coordinates fit an int with room to spare;
+    // the renderer cuts the box to the frame anyway.
+    static constexpr double kLimit = 1 << 28;
+    const auto clampd = [](double v) { return std::clamp(v, -kLimit, kLimit); };
+    if (!(b.x0 <= b.x1 && b.y0 <= b.y1)) return {};
+    return {int(std::floor(clampd(b.x0))), int(std::floor(clampd(b.y0))),
+            int(std::ceil(clampd(b.x1))), int(std::ceil(clampd(b.y1)))};
+}
+
+PixelRect filter_pixel_region(const FilterGraph& g, const Affine& to_device) {
+    return device_pixels(g.region, to_device);
+}
+
+double filter_reach(const FilterGraph& g, const Affine& to_device) {
+    const Scales s(to_device);
+    double r = 0;
+    for (const FilterPrimitive& p : g.primitives) r += reach_of(p, s);
+    return r;
+}
+
+namespace {
+
+/// The largest morphology radius (device px): the erosion and dilation
+/// cost grows with it, and beyond it a layer is eroded away or flooded.
+constexpr double kMaxMorphologyRadius = 256;
+
+// One primitive run: its inputs, its output, its subregion.
+struct Step {
+    const FilterPrimitive& p;
+    const Affine& m;
+    const Scales& s;
+    const FilterSources& io;
+    Inputs& inputs;
+    FilterImage& out;
+    Subregion sub;
+    FilterImage scratch[2];
+
+    int input_index(std::size_t k) const {
+        return k < p.inputs.size() ? p.inputs[k] : filter_input::kSourceGraphic;
+    }
+    // Input k in the primitive's space, or as it is when !convert.
+    const FilterImage& in(std::size_t k, bool convert = true) {
+        return inputs.get(input_index(k), p.linear, convert, scratch[std::min<std::size_t>(k, 1)]);
+    }
+    // Copies `src` into out over the subregion, keeping src's space.
+    void copy(const FilterImage& src) {
+        out.linear = src.linear;
+        for (int y = sub.y0; y < sub.y1; ++y)
+            for (int x = sub.x0; x < sub.x1; ++x) out.at(x, y) = src.at(x, y);
+    }
+
+    void operator()(const GaussianBlur& b) {
+        const double sx = std::max(0.0, b.sx) * s.sx, sy = std::max(0.0, b.sy) * s.sy;
+        const FilterImage& src = in(0);
+        if (!(sx > 0) && !(sy > 0)) return copy(src); // 15.15: disabled, the input itself
+        gaussian_blur(src, out, sub, sx, sy, b.edge);
+    }
+    void operator()(const Offset& o) {
+        const Vec2 d = m * Vec2{o.dx, o.dy};
+        const FilterImage& src = in(0, false);
+        out.linear = src.linear;
+        constexpr double kFar = 1 << 28; // beyond any window: everything moves out
+        offset(src, out, sub, int(std::lround(std::clamp(d.x, -kFar, kFar))),
+               int(std::lround(std::clamp(d.y, -kFar, kFar))));
+    }
+    void operator()(const Flood& f) { flood(out, sub, color_in_space(f.color, p.linear)); }
+    void operator()(const Blend& b) { blend(in(0), in(1), out, sub, b.mode); }
+    void operator()(const Composite& c) { composite(in(0), in(1), out, sub, c); }
+    void operator()(const Merge&) {
+        for (std::size_t k = 0; k < p.inputs.size(); ++k) {
+            const FilterImage* img = &inputs.get(p.inputs[k], p.linear, true, scratch[0]);
+            merge({&img, 1}, out, sub);
+        }
+    }
+    void operator()(const ColorMatrix& c) { color_matrix(in(0), out, sub, c); }
+    void operator()(const ComponentTransfer& t) { component_transfer(in(0), out, sub, t); }
+    void operator()(const Morphology& mo) {
+        const FilterImage& src = in(0);
+        // 15.20: a radius of zero or less disables the primitive (the input itself).
+        if (!(mo.rx > 0 && mo.ry > 0)) return copy(src);
+        const auto px = [](double r) {
+            return int(std::lround(std::min(r, kMaxMorphologyRadius)));
+        };
+        morphology(src, out, sub, mo.dilate, px(mo.rx * s.sx), px(mo.ry * s.sy));
+    }
+    void operator()(const Convolve& c) { convolve(in(0), out, sub, c.m); }
+    void operator()(const TurbulenceOp& t) { turbulence(out, sub, t.t, m.inverse(), p.subregion); }
+    void operator()(const Displacement& d) {
+        const FilterImage& src = in(0, false);
+        const FilterImage& map = in(1);
+        out.linear = src.linear;
+        displacement_map(src, map, out, sub, d.scale * s.sx, d.scale * s.sy, d.x, d.y);
+    }
+    void operator()(const Tile&) {} // needs the input's subregion: run_filter does it
+    void operator()(const ImageInput& i) {
+        if (i.index >= 0 && std::size_t(i.index) < io.images.size())
+            copy(io.images[std::size_t(i.index)]);
+        else
+            out.linear = false;
+    }
+    void operator()(const LightingOp& op) {
+        Lighting l = op.l;
+        const auto encode = [&](float v) { return p.linear ? srgb_to_linear(v) : v; };
+        l.color = {encode(op.l.color.r), encode(op.l.color.g), encode(op.l.color.b), 1};
+        const double sz = std::sqrt(s.sx * s.sy);
+        const auto place = [&](double& x, double& y, double& z) {
+            const Point q = m * Point{x, y};
+            x = q.x;
+            y = q.y;
+            z *= sz;
+        };
+        if (auto* pl = std::get_if<PointLight>(&l.light)) place(pl->x, pl->y, pl->z);
+        if (auto* sl = std::get_if<SpotLight>(&l.light)) {
+            place(sl->x, sl->y, sl->z);
+            place(sl->at_x, sl->at_y, sl->at_z);
+        }
+        lighting(in(0), out, sub, l);
+    }
+    void operator()(const DropShadow& d) {
+        const FilterImage& src = in(0);
+        FilterImage alpha, blurred;
+        alpha.reset(src.box, p.linear);
+        for (std::size_t i = 0; i < src.px.size(); ++i) alpha.px[i].a = src.px[i].a;
+        blurred.reset(src.box, p.linear);
+        const Subregion all{0, 0, src.width(), src.height()};
+        const double sx = std::max(0.0, d.sx) * s.sx, sy = std::max(0.0, d.sy) * s.sy;
+        if (sx > 0 || sy > 0)
+            gaussian_blur(alpha, blurred, all, sx, sy, EdgeMode::None);
+        else
+            blurred = alpha;
+        const Vec2 v = m * Vec2{d.dx, d.dy};
+        const int dx = int(std::lround(std::clamp(v.x, -1e8, 1e8)));
+        const int dy = int(std::lround(std::clamp(v.y, -1e8, 1e8)));
+        const Premul c = color_in_space(d.color, p.linear);
+        for (int y = sub.y0; y < sub.y1; ++y)
+            for (int x = sub.x0; x < sub.x1; ++x) {
+                const float k = blurred.get(x - dx, y - dy).a;
+                const Premul& f = src.at(x, y);
+                const float under = k * (1 - f.a);
+                out.at(x, y) = {f.r + c.r * under, f.g + c.g * under, f.b + c.b * under,
+                                f.a + c.a * under};
+            }
+    }
+};
+
+// The last primitive reading each result (its own index when none does).
+std::vector<std::size_t> last_uses(const FilterGraph& g) {
+    std::vector<std::size_t> last(g.primitives.size());
+    for (std::size_t i = 0; i < last.size(); ++i) {
+        last[i] = i;
+        for (int k : g.primitives[i].inputs)
+            if (k >= 0) last[std::size_t(k)] = i;
+    }
+    return last;
+}
+
+bool valid(const FilterGraph& g) {
+    if (g.primitives.empty() || g.primitives.size() > kMaxFilterPrimitives) return false;
+    for (std::size_t i = 0; i < g.primitives.size(); ++i)
+        for (int k : g.primitives[i].inputs)
+            if (k >= int(i) || k < filter_input::kStrokePaint) return false;
+    return true;
+}
+
+} // namespace
+
+bool run_filter(const FilterGraph& g, const Affine& to_device, const FilterSources& io) {
+    FilterImage& source = *io.source;
+    const PixelRect window = source.box;
+    const std::size_t bytes = source.px.size() * sizeof(Premul);
+    // At most every result, its two converted inputs and the source alpha
+    // at once: a conservative count, checked before any work.
+    const std::size_t held = std::min(g.primitives.size(), std::size_t(16)) + 4;
+    if (!valid(g) || (bytes > 0 && held > kMaxFilterBytes / bytes)) {
+        source.reset(window, false);
+        return false;
+    }
+    const Scales scales(to_device);
+    const PixelRect region = filter_pixel_region(g, to_device);
+    const std::vector<std::size_t> last = last_uses(g);
+    Results results(g.primitives.size(), window);
+    Inputs inputs(io, results);
+    std::size_t live = 0;
+    for (std::size_t i = 0; i < g.primitives.size(); ++i) {
+        const FilterPrimitive& p = g.primitives[i];
+        if (++live * bytes > kMaxFilterBytes) {
+            source.reset(window, false);
+            return false;
+        }
+        const Rect user_sub = p.subregion.intersected(g.region);
+        const PixelRect px = device_pixels(user_sub, to_device);
+        const PixelRect cut{std::max(px.x0, region.x0), std::max(px.y0, region.y0),
+                            std::min(px.x1, region.x1), std::min(px.y1, region.y1)};
+        Step step{
+            p, to_device, scales, io, inputs, results.make(i, p.linear), window_part(cut, window),
+            {}};
+        if (std::holds_alternative<Tile>(p.op)) {
+            const FilterImage& src = step.in(0, false);
+            const int k = step.input_index(0);
+            const PixelRect t =
+                k >= 0 ? device_pixels(g.primitives[std::size_t(k)].subregion.intersected(g.region),
+                                       to_device)
+                       : region;
+            step.out.linear = src.linear;
+            tile(src, {t.x0 - window.x0, t.y0 - window.y0, t.x1 - window.x0, t.y1 - window.y0},
+                 step.out, step.sub);
+        } else if (!step.sub.empty()) {
+            std::visit(step, p.op);
+        }
+        for (int k : p.inputs)
+            if (k >= 0 && last[std::size_t(k)] == i) {
+                results.free(std::size_t(k));
+                --live;
+            }
+    }
+    FilterImage& result = results[g.primitives.size() - 1];
+    convert_space(result, false);
+    std::swap(source, result);
+    return true;
+}
+
+} // namespace casteljau

@@ -1,0 +1,27 @@
+// Internal to the SVG reader (not installed): the ASCII text helpers CSS
+// and SVG values share (CSS Syntax 3: whitespace, and keywords compared
+// ASCII case-insensitively).
+#pragma once
+
+#include <algorithm>
+#include <cctype>
+#include <string_view>
+
+namespace casteljau::svg_detail {
+
+/// `s` without leading and trailing whitespace.
+inline std::string_view trim(std::string_view s) {
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+    return s;
+}
+
+/// Whether a and b are equal but for ASCII case (CSS keywords).
+inline bool iequals(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+} // namespace casteljau::svg_detail
