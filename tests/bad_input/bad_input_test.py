@@ -159,6 +159,10 @@ RECOVERED = {
         r"pixels exceeds the limit of 33554432 pixels",
     "image_data_100000_squared.svg":
         r"2: <image>: the image cannot be drawn: image of 100000 x 100000 pixels exceeds the limit",
+    "filter_missing.svg": r"2: <rect>: url\(#nope\) names no <filter>; the element is not drawn",
+    # The feImage draws the rectangle again, whose filter is the one being
+    # read: that copy is not drawn.
+    "filter_image_of_itself.svg": r"3: <rect>: <filter> #f refers back to itself; the element is not drawn",
 }
 
 def png_header_only(w, h):
@@ -317,6 +321,25 @@ def generate_valid(folder):
     hrefs = ["image_of_itself_3_hrefs.svg", "./image_of_itself_3_hrefs.svg", "image_of_itself_3_hrefs.svg?b"]
     svg("image_of_itself_3_hrefs.svg", 64, 64, '<rect width="64" height="32" fill="#2a6fb0"/>\n' + "".join(
         '<image href="%s" x="%d" y="32" width="21" height="32"/>\n' % (h, 21 * i) for i, h in enumerate(hrefs)))
+    # Filters at their limits: a region of 2e6 px a side (drawn over the
+    # frame grown by kMaxFilterMargin), deviations, radii and octaves far
+    # over their bounds, the largest convolution kernel (32 x 32), and a
+    # chain of 400 primitives.
+    svg("filter_region_2e6_px.svg", 400, 400,
+        '<filter id="f" filterUnits="userSpaceOnUse" x="-1e6" y="-1e6" width="2e6" height="2e6">'
+        '<feGaussianBlur stdDeviation="40"/><feOffset dx="30" dy="20"/></filter>\n'
+        '<rect x="50" y="50" width="300" height="300" fill="#2a6fb0" filter="url(#f)"/>\n')
+    svg("filter_values_1e9.svg", 300, 300,
+        '<filter id="f"><feGaussianBlur stdDeviation="1e9"/><feMorphology operator="dilate" radius="1e9"/>'
+        '<feTurbulence baseFrequency="0.05" numOctaves="1000000000"/>'
+        '<feDisplacementMap in2="SourceGraphic" scale="1e9"/><feOffset dx="1e300"/></filter>\n'
+        '<rect width="300" height="300" fill="#2a6fb0" filter="url(#f)"/>\n')
+    svg("filter_kernel_32x32.svg", 200, 200,
+        '<filter id="f"><feConvolveMatrix order="32" kernelMatrix="%s"/></filter>\n'
+        '<circle cx="100" cy="100" r="80" fill="#2a6fb0" filter="url(#f)"/>\n' % " ".join(["1"] * 1024))
+    svg("filter_primitives_400.svg", 200, 200,
+        '<filter id="f">%s</filter>\n<rect width="160" height="160" fill="#2a6fb0" filter="url(#f)"/>\n'
+        % ('<feOffset dx="0.1"/><feColorMatrix type="hueRotate" values="10"/>' * 200))
     with open(os.path.join(folder, "patch_collapsed_edge.bpt"), "w") as f:
         f.write("1\n3 3\n")
         for r in rows:
@@ -339,6 +362,10 @@ VALID = {
     "clip_paths_nested_200.svg": ([], 2.0),
     "masks_nested_200.svg": ([], 2.0),
     "image_of_itself_3_hrefs.svg": ([], 4.0),
+    "filter_region_2e6_px.svg": ([], 2.0),
+    "filter_values_1e9.svg": ([], 6.0),
+    "filter_kernel_32x32.svg": ([], 3.0),
+    "filter_primitives_400.svg": ([], 3.0),
 }
 
 

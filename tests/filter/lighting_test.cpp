@@ -141,7 +141,8 @@ TEST(Lighting, SpotLightCone) {
     EXPECT_EQ(away.at(32, 32).r, 0.0f);
 }
 
-// Specular: alpha is the largest channel, the colors premultiplied by it.
+// Specular: alpha is the largest channel, the colors as they are (already
+// premultiplied, as every engine takes them).
 TEST(Lighting, SpecularAlphaIsTheMaximumChannel) {
     const FilterImage in = constant_alpha({0, 0, 6, 5}, 0.3f);
     Lighting l = diffuse(DistantLight{0, 90}, 0.6, {1, 0.5f, 0.25f, 1});
@@ -151,9 +152,9 @@ TEST(Lighting, SpecularAlphaIsTheMaximumChannel) {
     FilterImage out = run(in, l);
     for (const Premul& p : out.px) {
         EXPECT_NEAR(p.a, 0.6, 1e-6);
-        EXPECT_NEAR(p.r, 0.6 * 0.6, 1e-6);
-        EXPECT_NEAR(p.g, 0.3 * 0.6, 1e-6);
-        EXPECT_NEAR(p.b, 0.15 * 0.6, 1e-6);
+        EXPECT_NEAR(p.r, 0.6, 1e-6);
+        EXPECT_NEAR(p.g, 0.3, 1e-6);
+        EXPECT_NEAR(p.b, 0.15, 1e-6);
     }
     // Elevation 60: H = normalize(L + (0, 0, 1)), N.H = cos(15 degrees).
     l.light = DistantLight{45, 60};
@@ -164,8 +165,8 @@ TEST(Lighting, SpecularAlphaIsTheMaximumChannel) {
     for (const Premul& p : out.px) {
         const double a = std::min(1.0, k * 0.9);
         EXPECT_NEAR(p.a, a, 1e-6);
-        EXPECT_NEAR(p.g, a * a, 1e-6);
-        EXPECT_NEAR(p.r, k * 0.2 * a, 1e-6);
+        EXPECT_NEAR(p.g, a, 1e-6);
+        EXPECT_NEAR(p.r, k * 0.2, 1e-6);
         EXPECT_LE(p.r, p.a);
     }
     // A bright highlight clamps every channel to 1: opaque white.

@@ -173,6 +173,32 @@ TEST(Filter, SmallDeviationsBlurByTheGaussianItself) {
     EXPECT_NEAR(at(c, 20, 50).a, 0.6915f, 0.01);
 }
 
+TEST(Filter, FillPaintAndStrokePaintAreThePaintsOverTheRegion) {
+    const Canvas c = render(
+        R"svg(<filter id="f" filterUnits="userSpaceOnUse" x="0" y="0" width="100" height="100">
+          <feOffset in="StrokePaint" x="50" width="50" result="s"/>
+          <feMerge><feMergeNode in="FillPaint"/><feMergeNode in="s"/></feMerge></filter>
+        <rect x="40" y="40" width="20" height="20" fill="#00ff00" stroke="#0000ff" filter="url(#f)"/>)svg");
+    EXPECT_EQ(at(c, 5, 5).g, 1.0f) << "the fill's paint, all over the region";
+    EXPECT_EQ(at(c, 75, 5).b, 1.0f) << "the stroke's, over its subregion";
+    EXPECT_EQ(at(c, 75, 95).b, 1.0f);
+}
+
+TEST(Filter, FeDropShadowIsItsEquivalentGraph) {
+    // Filter Effects 1, 15.13: blur of the alpha, offset, flood, in, merged
+    // under the source. (librsvg 2.54 does not draw feDropShadow.)
+    const Canvas shadow = render(R"svg(<filter id="f"><feDropShadow dx="4" dy="6" stdDeviation="3"
+          flood-color="#203060" flood-opacity="0.7"/></filter>
+        <circle cx="45" cy="45" r="25" fill="#e0a030" filter="url(#f)"/>)svg");
+    const Canvas graph = render(R"svg(<filter id="f">
+          <feGaussianBlur in="SourceAlpha" stdDeviation="3"/><feOffset dx="4" dy="6" result="o"/>
+          <feFlood flood-color="#203060" flood-opacity="0.7"/><feComposite in2="o" operator="in"/>
+          <feMerge><feMergeNode/><feMergeNode in="SourceGraphic"/></feMerge></filter>
+        <circle cx="45" cy="45" r="25" fill="#e0a030" filter="url(#f)"/>)svg");
+    EXPECT_LT(testing::max_difference(shadow, graph), 2e-4f);
+    EXPECT_GT(at(shadow, 71, 56).a, 0.3f) << "the shadow shows beyond the circle";
+}
+
 TEST(Filter, HostileValuesAreBounded) {
     // Huge deviations, radii, octaves, kernels and regions: drawn, in bounded work.
     const Canvas c = render(

@@ -28,8 +28,12 @@
 // diffuse:  RGB = kd * N.L * light color, A = 1;
 // specular: RGB = ks * pow(N.H, specularExponent) * light color,
 //           H = normalize(L + (0, 0, 1)), A = max(R, G, B);
-// N.L and N.H below 0 light nothing. RGB are clamped to [0, 1] first (so A
-// is too), then premultiplied by A.
+// N.L and N.H below 0 light nothing. RGB are clamped to [0, 1] (so A is
+// too). The diffuse result is opaque; the specular one is taken as already
+// premultiplied (its colors are at most A by construction), as Chrome
+// (Skia), Firefox, resvg and librsvg all take it: multiplying by A again
+// would square every highlight, which a specular map added to a texture by
+// the arithmetic feComposite (its intended use, 15.23) does not show.
 //
 // Invariants: alpha in [0, 1] and colors <= alpha by construction. Each
 // pixel reads its 3 x 3 neighbourhood only, so a window cut elsewhere gives
@@ -123,7 +127,7 @@ void shade(const FilterImage& in, FilterImage& out, const Subregion& sub, const 
             const double k = lt.constant * (nh > 0 ? std::pow(nh, lt.specular_exponent) : 0);
             const float r = unit(k * s.color.x), g = unit(k * s.color.y), b = unit(k * s.color.z);
             const float a = std::max({r, g, b});
-            out.at(x, y) = {r * a, g * a, b * a, a};
+            out.at(x, y) = {r, g, b, a};
         }
 }
 

@@ -34,6 +34,8 @@ template <class... F>
 struct Overloaded : F... {
     using F::operator()...;
 };
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>; // clang before 17 deduces no aggregate
 
 struct Scales {
     double sx, sy;

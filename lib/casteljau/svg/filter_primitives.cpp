@@ -21,6 +21,11 @@ namespace casteljau::svg_detail {
 
 namespace {
 
+// The most entries a convolution kernel may have (a 32 x 32 one): the work
+// per pixel grows with it, and real files use 3 x 3 to 7 x 7. A larger
+// order is an error (the primitive is transparent).
+constexpr double kMaxKernelTaps = 1024;
+
 // Numbers separated by whitespace and/or a comma; nullopt when malformed.
 std::optional<std::vector<double>> numbers(std::string_view v) {
     std::vector<double> out;
@@ -126,8 +131,9 @@ std::optional<Convolve> convolve_of(const pugi::xml_node& e) {
     if (e.attribute("order")) {
         if (!order || order->empty() || order->size() > 2) return std::nullopt;
         const double ox = (*order)[0], oy = order->size() == 2 ? (*order)[1] : ox;
-        if (ox < 1 || oy < 1 || ox != std::floor(ox) || oy != std::floor(oy) || ox * oy > 4096)
-            return std::nullopt; // 64 x 64 kernels at most: a bound on the work per pixel
+        if (ox < 1 || oy < 1 || ox != std::floor(ox) || oy != std::floor(oy) ||
+            ox * oy > kMaxKernelTaps)
+            return std::nullopt;
         c.m.order_x = int(ox), c.m.order_y = int(oy);
     }
     const auto k = numbers(e.attribute("kernelMatrix").value());

@@ -246,11 +246,40 @@ std::shared_ptr<Filter> Reader::filter_element(const pugi::xml_node& n, const pu
     instancing_.push_back(f);
     read_primitives(source, pu, m, *out, depth);
     instancing_.pop_back();
+    filter_paints(n, m, *out);
     if (out->graph.primitives.empty()) {
         problem(f, "a filter with no primitives; the element is not drawn");
         return nullptr;
     }
     return out;
+}
+
+// FillPaint and StrokePaint (9.6): the element's fill and stroke paints
+// over the filter region (their opacities apart, as the spec has "the value
+// of the fill property"), drawn only when a primitive reads them.
+void Reader::filter_paints(const pugi::xml_node& n, const Affine& m, Filter& f) {
+    bool fill = false, stroke = false;
+    for (const FilterPrimitive& p : f.graph.primitives)
+        for (int k : p.inputs) {
+            fill = fill || k == filter_input::kFillPaint;
+            stroke = stroke || k == filter_input::kStrokePaint;
+        }
+    if (!fill && !stroke) return;
+    ElementProps props;
+    const StyleState style = style_of(n, props);
+    const Rect& r = f.graph.region;
+    const Path path = rect_path(r.x0, r.y0, r.width(), r.height(), 0, 0);
+    const auto draw = [&](const PaintSpec& spec, Group& out) {
+        const auto p = paint(n, spec, style, path);
+        if (!p) return;
+        Shape s;
+        s.path = path;
+        s.transform = m;
+        s.fill = Fill{p->color, p->gradient, 1, FillRule::NonZero, p->pattern};
+        out.children.push_back(Node{std::move(s)});
+    };
+    if (fill) draw(style.fill, f.fill_paint);
+    if (stroke) draw(style.stroke, f.stroke_paint);
 }
 
 } // namespace casteljau::svg_detail

@@ -175,6 +175,7 @@ class Reader {
                                            const Affine& m, const BoxOf& bbox, int depth);
     // One primitive's operation (svg/filter_primitives.cpp); nullopt when
     // the element is not a primitive. `f` gets the drawings it needs.
+    void filter_paints(const pugi::xml_node& n, const Affine& m, Filter& f);
     void read_primitives(const pugi::xml_node& filter, const PrimitiveUnits& u, const Affine& m,
                          Filter& f, int depth);
     FilterOp image_input(const pugi::xml_node& e, const StyleState& style, const Affine& m,
