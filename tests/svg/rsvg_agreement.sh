@@ -12,12 +12,13 @@
 #   stored: both are straight (un-premultiplied) 8-bit RGBA, and a value
 #   divided by alpha once too often, or not at all, shows in the color.
 #   Alpha: mean difference < 1/255, per-pixel bound as over white (coverage
-#   is what alpha holds). Straight color, where both alphas are > 0: mean
-#   difference < 2/255 per channel (rsvg-convert derives it from 8-bit
-#   premultiplied values, about a step off ours even where alpha is high),
-#   and the difference times the smaller alpha (what shows once composited;
-#   at a faint alpha the straight color of either is coarse) within the
-#   per-pixel bound as over white.
+#   is what alpha holds). Straight color, where both alphas are > 0: the
+#   mean difference weighted by the smaller alpha < 2/255 per channel
+#   (rsvg-convert derives it from 8-bit premultiplied values, about a step
+#   off ours even where alpha is high, and any value at all at alpha 1/255:
+#   a blur's faint tails would outweigh everything else unweighted), and the
+#   difference times the smaller alpha (what shows once composited) within
+#   the per-pixel bound as over white.
 # Most examples paint an opaque background, so a generated SVG of translucent
 # shapes over transparency (issue 21's rectangle among them) is always added.
 # Usage: rsvg_agreement.sh PATH/TO/casteljau FILE.svg...
@@ -83,7 +84,7 @@ def read_png(path):
 bound = float(sys.argv[3])
 if (w, h) != (w2, h2):
     sys.exit(f'sizes differ: {w}x{h} and {w2}x{h2}')
-alpha_sum = alpha_max = 0
+alpha_sum = alpha_max = weights = 0
 color_sum, weighted_max, counted = [0, 0, 0], [0.0, 0.0, 0.0], 0
 for i in range(0, 4 * w * h, 4):
     ao, ar = ours[i + 3], rsvg[i + 3]
@@ -91,16 +92,17 @@ for i in range(0, 4 * w * h, 4):
     alpha_max = max(alpha_max, abs(ao - ar))
     if ao and ar:
         counted += 1
+        weights += min(ao, ar)
         for c in range(3):
             d = abs(ours[i + c] - rsvg[i + c])
-            color_sum[c] += d
+            color_sum[c] += d * min(ao, ar)
             weighted_max[c] = max(weighted_max[c], d * min(ao, ar) / 255)
 alpha_mean = alpha_sum / (w * h) / 255
-color_mean = [s / max(counted, 1) / 255 for s in color_sum]
+color_mean = [s / max(weights, 1) / 255 for s in color_sum]
 weighted_max = [m / 255 for m in weighted_max]
 ok = (alpha_mean < 1 / 255 and alpha_max / 255 <= bound and all(m < 2 / 255 for m in color_mean)
       and all(m <= bound for m in weighted_max))
-print('alpha mean %.5f, max %.4f; straight RGB over %d px: mean %s, max x alpha %s' % (
+print('alpha mean %.5f, max %.4f; straight RGB over %d px: alpha-weighted mean %s, max x alpha %s' % (
     alpha_mean, alpha_max / 255, counted, ' '.join('%.5f' % m for m in color_mean),
     ' '.join('%.4f' % m for m in weighted_max)))
 sys.exit(0 if ok else 1)
