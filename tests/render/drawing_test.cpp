@@ -172,6 +172,35 @@ TEST(DrawingLayers, ClippedBlendedGroupsImagesAndPatternsRedrawExactly) {
     EXPECT_EQ(differing_rows(full, edited), 0);
 }
 
+TEST(DrawingLayers, FilteredGroupsRedrawExactly) {
+    // A drop shadow and a blur on groups: a partial redraw after moving one
+    // equals a full render, bit for bit (the damage is the filter region).
+    Drawing d(160, 120);
+    Group card;
+    Shape s;
+    s.path = rect_path(20, 20, 50, 40, 0, 0);
+    s.fill = Fill{{0.2f, 0.4f, 0.8f, 1}, nullptr, 1, FillRule::NonZero};
+    card.children.push_back(Node{s});
+    card.filters.push_back(drop_shadow_filter({4, 6}, 3, {0, 0, 0, 0.5f}, {0, 0, 100, 90}));
+    const Drawing::ShapeId shadowed = d.add(card);
+    Group soft = card;
+    soft.filters = {blur_filter(2.5, {80, 10, 150, 110})};
+    soft.children[0] = Node{Shape{rect_path(95, 30, 40, 60, 0, 0), {}, s.fill, {}}};
+    d.add(soft);
+    Canvas full(160, 120), edited(160, 120);
+    d.render(edited, kBackground);
+    EXPECT_EQ(edited.row(40)[40].b, 0.8f) << "the card over its shadow";
+    EXPECT_LT(edited.row(63)[50].r, kBackground.r - 0.1f) << "the shadow below it";
+    EXPECT_LT(edited.row(60)[95].b, 0.8f) << "the blurred edge";
+    EXPECT_GT(edited.row(60)[95].b, kBackground.b) << "...spread beyond the shape";
+    Group moved = card;
+    moved.children[0] = Node{Shape{rect_path(10, 50, 50, 40, 0, 0), {}, s.fill, {}}};
+    const PixelRect dirty = d.replace(shadowed, Node{moved});
+    d.render_region(edited, dirty, kBackground);
+    d.render(full, kBackground);
+    EXPECT_EQ(differing_rows(full, edited), 0);
+}
+
 TEST(DrawingHit, ShapeAtFindsTheTopmostFillOrStroke) {
     Drawing d(200, 200);
     Path square;

@@ -41,6 +41,29 @@ std::shared_ptr<const Mask> clip_of(const Path& path, const Affine& transform, F
     return m;
 }
 
+namespace {
+
+std::shared_ptr<const Filter> one_primitive(FilterOp op, const Rect& region, const Affine& m) {
+    auto f = std::make_shared<Filter>();
+    f->transform = m;
+    f->graph.region = region;
+    // sRGB, as the CSS functions are: what a drawing application shows.
+    f->graph.primitives.push_back({std::move(op), {filter_input::kSourceGraphic}, region, false});
+    return f;
+}
+
+} // namespace
+
+std::shared_ptr<const Filter> blur_filter(double sigma, const Rect& region,
+                                          const Affine& transform) {
+    return one_primitive(GaussianBlur{sigma, sigma, EdgeMode::None}, region, transform);
+}
+
+std::shared_ptr<const Filter> drop_shadow_filter(Vec2 offset, double sigma, Rgba color,
+                                                 const Rect& region, const Affine& transform) {
+    return one_primitive(DropShadow{sigma, sigma, offset.x, offset.y, color}, region, transform);
+}
+
 Drawing::Drawing(int width, int height) : width_(width), height_(height) {
     scene_.width = width;
     scene_.height = height;

@@ -58,6 +58,18 @@ struct Paint {
 std::shared_ptr<const Mask> clip_of(const Path& path, const Affine& transform = Affine::identity(),
                                     FillRule rule = FillRule::NonZero);
 
+/// A filter for Group::filters: a Gaussian blur of standard deviation
+/// `sigma`, drawn over `region`; both in the coordinates `transform` maps to
+/// the canvas (a blur spreads about 3 sigma: grow the region by as much).
+std::shared_ptr<const Filter> blur_filter(double sigma, const Rect& region,
+                                          const Affine& transform = Affine::identity());
+/// A filter for Group::filters: the group over its shadow, its alpha
+/// blurred by `sigma`, moved by `offset` and colored `color`; in the
+/// coordinates `transform` maps to the canvas, over `region`.
+std::shared_ptr<const Filter> drop_shadow_filter(Vec2 offset, double sigma, Rgba color,
+                                                 const Rect& region,
+                                                 const Affine& transform = Affine::identity());
+
 /// A retained, editable list of shapes on a width x height pixel canvas.
 class Drawing {
   public:
@@ -82,9 +94,10 @@ class Drawing {
     /// Adds `image` stretched onto `where` (mapped to pixels by `transform`).
     ShapeId image(std::shared_ptr<const RasterImage> image, const Rect& where,
                   const Affine& transform = Affine::identity(), bool smooth = true);
-    /// Adds a group: its shapes drawn together into a layer, then clipped,
-    /// masked (Group::clip, Group::mask, see clip_of) and composited with
-    /// its opacity and blend mode. Its shapes' transforms map to the canvas.
+    /// Adds a group: its shapes drawn together into a layer, then filtered
+    /// (Group::filters, see blur_filter, drop_shadow_filter, or any
+    /// FilterGraph), clipped, masked (Group::clip, Group::mask, see clip_of)
+    /// and composited with its opacity and blend mode. Its shapes' transforms map to the canvas.
     /// Hit tests (shape_at, shapes_in) pass over groups.
     ShapeId add(Group group);
     /// Number of shapes, removed ones included.
