@@ -2,11 +2,14 @@
 // a blur of standard deviation 10 on a 1024 x 1024 layer against a naive
 // separable convolution with the same Gaussian (61 taps a pass) and against
 // the memory floor (one copy of the layer's 16 MiB); and a drop shadow on
-// 2,000 blobs at 1024 px against the same scene unfiltered, on 1 and 2
-// band threads.
+// 2,000 blobs at 1024 px and on the dense example (examples/svg/dense.svg,
+// a stroke-heavy drawing standing in for the Ghostscript tiger, which this
+// project does not bundle) at 1024 px, each against the same scene
+// unfiltered, on 1 and 2 band threads.
 #include "../render/bench_scenes.h"
 #include "casteljau/filter/blur.h"
 #include "casteljau/render/bands.h"
+#include "casteljau/svg/reader.h"
 
 #include <benchmark/benchmark.h>
 #include <cmath>
@@ -89,14 +92,12 @@ void BM_CopyLayer(benchmark::State& state) {
 }
 BENCHMARK(BM_CopyLayer)->Unit(benchmark::kMillisecond);
 
-// 2,000 blobs, in a group with a drop shadow (state.range(0)) or without.
-Scene shadowed_blobs(bool shadow) {
-    Scene s = bench::random_blobs(7, 2000);
-    if (!shadow) return s;
+// `s` with its content in a group under a drop shadow.
+Scene shadowed(Scene s) {
     Group g;
     g.children = std::move(s.root.children);
     auto f = std::make_shared<Filter>();
-    f->graph.region = {-50, -50, kSide + 50.0, kSide + 50.0};
+    f->graph.region = {-50, -50, s.width + 50, s.height + 50};
     f->graph.primitives.push_back({DropShadow{4, 4, 6, 8, {0, 0, 0, 0.6f}},
                                    {filter_input::kSourceGraphic},
                                    f->graph.region,
@@ -107,19 +108,37 @@ Scene shadowed_blobs(bool shadow) {
     return s;
 }
 
-void BM_Blobs2k(benchmark::State& state) {
-    const Scene scene = shadowed_blobs(state.range(0) != 0);
+// Frames of `scene` scaled to 1024 px, with a drop shadow (range 0) or
+// without, on range(1) threads.
+void frames(benchmark::State& state, Scene scene) {
+    if (state.range(0) != 0) scene = shadowed(std::move(scene));
     const int threads = int(state.range(1));
-    Canvas canvas(kSide, kSide);
+    const double k = kSide / std::max(scene.width, scene.height);
+    Canvas canvas(int(scene.width * k), int(scene.height * k));
     BandRenderer r;
     for (auto _ : state) {
-        r.render(scene, Affine::identity(), canvas, RenderOptions{}, Premul{}, threads);
+        r.render(scene, Affine::scale(k), canvas, RenderOptions{}, Premul{}, threads);
         benchmark::DoNotOptimize(canvas.row(0));
     }
     state.SetLabel(std::string(state.range(0) ? "drop shadow" : "plain") + ", " +
                    std::to_string(threads) + " thread(s)");
 }
+
+void BM_Blobs2k(benchmark::State& state) { frames(state, bench::random_blobs(7, 2000)); }
 BENCHMARK(BM_Blobs2k)
+    ->Args({0, 1})
+    ->Args({1, 1})
+    ->Args({0, 2})
+    ->Args({1, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_Dense(benchmark::State& state) {
+    const SvgResult doc = read_svg_file(CASTELJAU_EXAMPLES "/svg/dense.svg");
+    if (!doc.scene) return state.SkipWithError(doc.error.c_str());
+    frames(state, *doc.scene);
+}
+BENCHMARK(BM_Dense)
     ->Args({0, 1})
     ->Args({1, 1})
     ->Args({0, 2})

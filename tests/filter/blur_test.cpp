@@ -169,6 +169,20 @@ TEST(GaussianBlur, ACutWindowGivesTheSameBitsWithinItsReach) {
     }
 }
 
+TEST(GaussianBlur, AlphaAloneIsTheAlphaOfTheWholeBlur) {
+    const FilterImage in = random_image(37, 29, 5);
+    for (double s : {1.2, 5.5}) {
+        const FilterImage all = blurred(in, s, s * 0.7);
+        FilterImage alpha;
+        alpha.reset(in.box, false);
+        gaussian_blur(in, alpha, {0, 0, 37, 29}, s, s * 0.7, EdgeMode::None, true);
+        for (std::size_t i = 0; i < in.px.size(); ++i) {
+            ASSERT_EQ(alpha.px[i].a, all.px[i].a) << "s " << s << " pixel " << i;
+            ASSERT_EQ(alpha.px[i].r, 0.0f);
+        }
+    }
+}
+
 TEST(GaussianBlur, WritesOnlyItsSubregion) {
     const FilterImage in = random_image(20, 20, 4);
     FilterImage out;

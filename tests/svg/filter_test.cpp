@@ -199,6 +199,19 @@ TEST(Filter, FeDropShadowIsItsEquivalentGraph) {
     EXPECT_GT(at(shadow, 71, 56).a, 0.3f) << "the shadow shows beyond the circle";
 }
 
+TEST(Filter, IgnoredInClipPathsDrawnInMasks) {
+    // A clip path is its children's geometry: their filters do not count;
+    // a mask's content is drawn, filters and all.
+    const Canvas c = render(R"svg(<filter id="away"><feOffset dx="100"/></filter>
+        <clipPath id="c"><rect width="50" height="100" filter="url(#away)"/></clipPath>
+        <mask id="m" maskUnits="userSpaceOnUse" x="0" y="0" width="100" height="100">
+          <rect x="50" width="50" height="100" fill="#fff" filter="url(#away)"/></mask>
+        <rect width="100" height="50" fill="#000" clip-path="url(#c)"/>
+        <rect y="50" width="100" height="50" fill="#000" mask="url(#m)"/>)svg");
+    EXPECT_EQ(at(c, 25, 25).a, 1.0f) << "clipped to the unmoved rectangle";
+    EXPECT_EQ(at(c, 75, 75).a, 0.0f) << "the mask's rectangle moved out of the mask";
+}
+
 TEST(Filter, HostileValuesAreBounded) {
     // Huge deviations, radii, octaves, kernels and regions: drawn, in bounded work.
     const Canvas c = render(

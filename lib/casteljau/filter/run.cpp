@@ -23,6 +23,7 @@
 #include "casteljau/filter/morphology.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -76,33 +77,57 @@ double reach_of(const FilterPrimitive& p, const Scales& s) {
         p.op);
 }
 
-// The images of one run, with their storage reused as results are freed.
+// The images of one run: the primitives' results and six temporaries (two
+// converted inputs, a drop shadow's two, SourceAlpha and a transparent
+// image), their storage taken from and
+// given back to the pool, so that a renderer's frames allocate none anew
+// (a fresh window-sized image is pages the kernel has to fault in).
 class Results {
   public:
-    Results(std::size_t n, const PixelRect& window) : images_(n), window_(window) {}
+    Results(std::size_t n, const PixelRect& window, std::vector<FilterImage>* pool)
+        : images_(n), window_(window), pool_(pool ? pool : &own_) {
+        for (FilterImage& t : temp_) t = take();
+    }
+    ~Results() {
+        for (FilterImage& img : images_)
+            if (img.px.capacity()) pool_->push_back(std::move(img));
+        for (FilterImage& t : temp_) pool_->push_back(std::move(t));
+    }
+    Results(const Results&) = delete;
+    Results& operator=(const Results&) = delete;
+
     FilterImage& make(std::size_t i, bool linear) {
-        if (!spare_.empty()) {
-            images_[i] = std::move(spare_.back());
-            spare_.pop_back();
-        }
+        images_[i] = take();
         images_[i].reset(window_, linear);
         return images_[i];
     }
     void free(std::size_t i) {
-        spare_.push_back(std::move(images_[i]));
+        pool_->push_back(std::move(images_[i]));
         images_[i] = {};
     }
     FilterImage& operator[](std::size_t i) { return images_[i]; }
+    /// Temporary k (0 to 5), any size.
+    FilterImage& temp(std::size_t k) { return temp_[k]; }
 
   private:
-    std::vector<FilterImage> images_, spare_;
+    FilterImage take() {
+        if (pool_->empty()) return {};
+        FilterImage img = std::move(pool_->back());
+        pool_->pop_back();
+        return img;
+    }
+    std::vector<FilterImage> images_;
+    std::array<FilterImage, 6> temp_;
     PixelRect window_;
+    std::vector<FilterImage> own_; // the pool when the caller gives none
+    std::vector<FilterImage>* pool_;
 };
 
 // A primitive's input `index`, in the space `linear` when `convert`.
 class Inputs {
   public:
-    Inputs(const FilterSources& io, Results& results) : io_(io), results_(results) {}
+    Inputs(const FilterSources& io, Results& results)
+        : io_(io), results_(results), alpha_(results.temp(4)), empty_(results.temp(5)) {}
     const FilterImage& get(int index, bool linear, bool convert, FilterImage& scratch) {
         const FilterImage* img = find(index, linear);
         if (!convert || img->linear == linear) return *img;
@@ -117,7 +142,8 @@ class Inputs {
         if (index >= 0) return &results_[std::size_t(index)];
         if (index == kSourceGraphic) return io_.source;
         if (index == kSourceAlpha) {
-            if (alpha_.px.empty()) {
+            if (!have_alpha_) {
+                have_alpha_ = true;
                 alpha_.reset(io_.source->box, linear);
                 for (std::size_t i = 0; i < alpha_.px.size(); ++i)
                     alpha_.px[i].a = io_.source->px[i].a;
@@ -129,13 +155,15 @@ class Inputs {
                                    : index == kStrokePaint ? io_.stroke_paint
                                                            : nullptr;
         if (paint) return paint;
-        if (empty_.px.empty()) empty_.reset(io_.source->box, linear);
+        if (!have_empty_) empty_.reset(io_.source->box, linear);
+        have_empty_ = true;
         empty_.linear = linear;
         return &empty_;
     }
     const FilterSources& io_;
     Results& results_;
-    FilterImage alpha_, empty_;
+    FilterImage &alpha_, &empty_; // made on first use
+    bool have_alpha_ = false, have_empty_ = false;
 };
 
 } // namespace
@@ -167,6 +195,13 @@ double filter_reach(const FilterGraph& g, const Affine& to_device) {
 
 namespace {
 
+// A shift of v device px in whole pixels (rounded), bounded beyond any
+// window (everything moves out), 0 for NaN.
+int whole_pixels(double v) {
+    constexpr double kFar = 1 << 28;
+    return v == v ? int(std::lround(std::clamp(v, -kFar, kFar))) : 0;
+}
+
 /// The largest morphology radius (device px): the erosion and dilation
 /// cost grows with it, and beyond it a layer is eroded away or flooded.
 constexpr double kMaxMorphologyRadius = 256;
@@ -180,14 +215,15 @@ struct Step {
     Inputs& inputs;
     FilterImage& out;
     Subregion sub;
-    FilterImage scratch[2];
+    Results& results;
 
     int input_index(std::size_t k) const {
         return k < p.inputs.size() ? p.inputs[k] : filter_input::kSourceGraphic;
     }
     // Input k in the primitive's space, or as it is when !convert.
     const FilterImage& in(std::size_t k, bool convert = true) {
-        return inputs.get(input_index(k), p.linear, convert, scratch[std::min<std::size_t>(k, 1)]);
+        return inputs.get(input_index(k), p.linear, convert,
+                          results.temp(std::min<std::size_t>(k, 1)));
     }
     // Copies `src` into out over the subregion, keeping src's space.
     void copy(const FilterImage& src) {
@@ -200,22 +236,21 @@ struct Step {
         const double sx = std::max(0.0, b.sx) * s.sx, sy = std::max(0.0, b.sy) * s.sy;
         const FilterImage& src = in(0);
         if (!(sx > 0) && !(sy > 0)) return copy(src); // 15.15: disabled, the input itself
-        gaussian_blur(src, out, sub, sx, sy, b.edge);
+        const bool alpha_only = input_index(0) == filter_input::kSourceAlpha;
+        gaussian_blur(src, out, sub, sx, sy, b.edge, alpha_only);
     }
     void operator()(const Offset& o) {
         const Vec2 d = m * Vec2{o.dx, o.dy};
         const FilterImage& src = in(0, false);
         out.linear = src.linear;
-        constexpr double kFar = 1 << 28; // beyond any window: everything moves out
-        offset(src, out, sub, int(std::lround(std::clamp(d.x, -kFar, kFar))),
-               int(std::lround(std::clamp(d.y, -kFar, kFar))));
+        offset(src, out, sub, whole_pixels(d.x), whole_pixels(d.y));
     }
     void operator()(const Flood& f) { flood(out, sub, color_in_space(f.color, p.linear)); }
     void operator()(const Blend& b) { blend(in(0), in(1), out, sub, b.mode); }
     void operator()(const Composite& c) { composite(in(0), in(1), out, sub, c); }
     void operator()(const Merge&) {
         for (std::size_t k = 0; k < p.inputs.size(); ++k) {
-            const FilterImage* img = &inputs.get(p.inputs[k], p.linear, true, scratch[0]);
+            const FilterImage* img = &inputs.get(p.inputs[k], p.linear, true, results.temp(0));
             merge({&img, 1}, out, sub);
         }
     }
@@ -225,9 +260,7 @@ struct Step {
         const FilterImage& src = in(0);
         // 15.20: a radius of zero or less disables the primitive (the input itself).
         if (!(mo.rx > 0 && mo.ry > 0)) return copy(src);
-        const auto px = [](double r) {
-            return int(std::lround(std::min(r, kMaxMorphologyRadius)));
-        };
+        const auto px = [](double r) { return whole_pixels(std::min(r, kMaxMorphologyRadius)); };
         morphology(src, out, sub, mo.dilate, px(mo.rx * s.sx), px(mo.ry * s.sy));
     }
     void operator()(const Convolve& c) { convolve(in(0), out, sub, c.m); }
@@ -265,23 +298,23 @@ struct Step {
     }
     void operator()(const DropShadow& d) {
         const FilterImage& src = in(0);
-        FilterImage alpha, blurred;
+        FilterImage &alpha = results.temp(2), &blurred = results.temp(3);
         alpha.reset(src.box, p.linear);
         for (std::size_t i = 0; i < src.px.size(); ++i) alpha.px[i].a = src.px[i].a;
         blurred.reset(src.box, p.linear);
         const Subregion all{0, 0, src.width(), src.height()};
         const double sx = std::max(0.0, d.sx) * s.sx, sy = std::max(0.0, d.sy) * s.sy;
-        if (sx > 0 || sy > 0)
-            gaussian_blur(alpha, blurred, all, sx, sy, EdgeMode::None);
-        else
-            blurred = alpha;
+        const FilterImage* shadow = &alpha;
+        if (sx > 0 || sy > 0) {
+            gaussian_blur(alpha, blurred, all, sx, sy, EdgeMode::None, true);
+            shadow = &blurred;
+        }
         const Vec2 v = m * Vec2{d.dx, d.dy};
-        const int dx = int(std::lround(std::clamp(v.x, -1e8, 1e8)));
-        const int dy = int(std::lround(std::clamp(v.y, -1e8, 1e8)));
+        const int dx = whole_pixels(v.x), dy = whole_pixels(v.y);
         const Premul c = color_in_space(d.color, p.linear);
         for (int y = sub.y0; y < sub.y1; ++y)
             for (int x = sub.x0; x < sub.x1; ++x) {
-                const float k = blurred.get(x - dx, y - dy).a;
+                const float k = shadow->get(x - dx, y - dy).a;
                 const Premul& f = src.at(x, y);
                 const float under = k * (1 - f.a);
                 out.at(x, y) = {f.r + c.r * under, f.g + c.g * under, f.b + c.b * under,
@@ -325,7 +358,7 @@ bool run_filter(const FilterGraph& g, const Affine& to_device, const FilterSourc
     const Scales scales(to_device);
     const PixelRect region = filter_pixel_region(g, to_device);
     const std::vector<std::size_t> last = last_uses(g);
-    Results results(g.primitives.size(), window);
+    Results results(g.primitives.size(), window, io.pool);
     Inputs inputs(io, results);
     std::size_t live = 0;
     for (std::size_t i = 0; i < g.primitives.size(); ++i) {
@@ -338,9 +371,14 @@ bool run_filter(const FilterGraph& g, const Affine& to_device, const FilterSourc
         const PixelRect px = device_pixels(user_sub, to_device);
         const PixelRect cut{std::max(px.x0, region.x0), std::max(px.y0, region.y0),
                             std::min(px.x1, region.x1), std::min(px.y1, region.y1)};
-        Step step{
-            p, to_device, scales, io, inputs, results.make(i, p.linear), window_part(cut, window),
-            {}};
+        Step step{p,
+                  to_device,
+                  scales,
+                  io,
+                  inputs,
+                  results.make(i, p.linear),
+                  window_part(cut, window),
+                  results};
         if (std::holds_alternative<Tile>(p.op)) {
             const FilterImage& src = step.in(0, false);
             const int k = step.input_index(0);
@@ -362,7 +400,7 @@ bool run_filter(const FilterGraph& g, const Affine& to_device, const FilterSourc
     }
     FilterImage& result = results[g.primitives.size() - 1];
     convert_space(result, false);
-    std::swap(source, result);
+    std::swap(source, result); // the source's storage goes back to the pool
     return true;
 }
 

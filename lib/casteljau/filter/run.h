@@ -38,6 +38,9 @@ struct FilterSources {
     std::span<const FilterImage> images = {};  ///< feImage drawings (ImageInput::index), sRGB
     const FilterImage* fill_paint = nullptr;   ///< FillPaint, sRGB; transparent when null
     const FilterImage* stroke_paint = nullptr; ///< StrokePaint, sRGB; transparent when null
+    /// Spare images whose storage a run reuses and leaves there for the
+    /// next (a renderer keeps one per thread); optional.
+    std::vector<FilterImage>* pool = nullptr;
 };
 
 /// Runs `g` with user space mapped to the device by `to_device`. False when

@@ -471,7 +471,7 @@ bool Renderer::filter_layer(const Group& g, Target& layer) {
         draw_filter_input(f->fill_paint, window, buf.inputs[n]);
         draw_filter_input(f->stroke_paint, window, buf.inputs[n + 1]);
         const FilterSources io{&buf.source, {buf.inputs.data(), n}, &buf.inputs[n],
-                               &buf.inputs[n + 1]};
+                               &buf.inputs[n + 1], &buf.pool};
         const auto t = stage_start(*options_);
         ok = ok && run_filter(f->graph, view_ * f->transform, io);
         add_stage_ms(stats_.raster_ms, *options_, t);

@@ -185,6 +185,7 @@ class Renderer {
     struct FilterBuffers {
         FilterImage source;
         std::vector<FilterImage> inputs;
+        std::vector<FilterImage> pool; ///< run_filter's intermediate images
     };
     std::vector<std::unique_ptr<FilterBuffers>> filter_buffers_;
     std::size_t filter_depth_ = 0;

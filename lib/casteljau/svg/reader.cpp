@@ -295,6 +295,7 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
         props.mask.clear();
         props.blend = BlendMode::Normal;
         props.isolate = false;
+        props.filter.clear(); // a clip path is the shapes' geometry (CSS Masking 1, 6.1)
     }
     Affine m = ctm;
     if (const pugi::xml_attribute t = n.attribute("transform")) {
