@@ -124,27 +124,21 @@ void frames(benchmark::State& state, Scene scene) {
                    std::to_string(threads) + " thread(s)");
 }
 
+// Plain and shadowed, on 1 and 2 threads.
+void frame_cases(benchmark::internal::Benchmark* b) {
+    for (int threads : {1, 2}) b->Args({0, threads})->Args({1, threads});
+    b->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+
 void BM_Blobs2k(benchmark::State& state) { frames(state, bench::random_blobs(7, 2000)); }
-BENCHMARK(BM_Blobs2k)
-    ->Args({0, 1})
-    ->Args({1, 1})
-    ->Args({0, 2})
-    ->Args({1, 2})
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+BENCHMARK(BM_Blobs2k)->Apply(frame_cases);
 
 void BM_Dense(benchmark::State& state) {
     const SvgResult doc = read_svg_file(CASTELJAU_EXAMPLES "/svg/dense.svg");
     if (!doc.scene) return state.SkipWithError(doc.error.c_str());
     frames(state, *doc.scene);
 }
-BENCHMARK(BM_Dense)
-    ->Args({0, 1})
-    ->Args({1, 1})
-    ->Args({0, 2})
-    ->Args({1, 2})
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+BENCHMARK(BM_Dense)->Apply(frame_cases);
 
 } // namespace
 } // namespace casteljau

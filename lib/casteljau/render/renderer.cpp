@@ -114,7 +114,8 @@ Rect Renderer::group_reach_box(const Group& g, const Affine& view) {
     if (!g.filters.empty()) { // a filter draws over its region, whatever the content's box
         const Filter& f = *g.filters.back();
         const PixelRect p = filter_pixel_region(f.graph, view * f.transform);
-        if (p.x1 > p.x0 && p.y1 > p.y0) r = {double(p.x0), double(p.y0), double(p.x1), double(p.y1)};
+        if (p.x1 > p.x0 && p.y1 > p.y0)
+            r = {double(p.x0), double(p.y0), double(p.x1), double(p.y1)};
     } else {
         for (const Node& c : g.children) r = r.united(node_reach_box(c, view));
     }
