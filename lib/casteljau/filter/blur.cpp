@@ -24,8 +24,8 @@
 // Speed: lines are blurred kStrip at a time, as the parallel lanes of a
 // bundle stored interleaved, so that the adds vectorize across the lanes
 // (and columns need no transpose); each box is a running sum over zero
-// margins (no branch in the loop). 23 ms for a deviation of 10 on 1024 x 1024 pixels, 10x a naive
-// separable convolution (bench/filter).
+// margins (no branch in the loop). 20.8 ms for a deviation of 10 on 1024 x 1024
+// pixels, 11x faster than a naive separable convolution (bench/filter).
 #include "casteljau/filter/blur.h"
 
 #include <algorithm>
