@@ -4,6 +4,7 @@
 // clip_mask_test.cpp, EffectFormats.)
 #include "casteljau/render/renderer.h"
 #include "casteljau/svg/reader.h"
+#include "image_files.h"
 #include "pixels.h"
 
 #include <gtest/gtest.h>
@@ -210,6 +211,36 @@ TEST(Filter, IgnoredInClipPathsDrawnInMasks) {
         <rect y="50" width="100" height="50" fill="#000" mask="url(#m)"/>)svg");
     EXPECT_EQ(at(c, 25, 25).a, 1.0f) << "clipped to the unmoved rectangle";
     EXPECT_EQ(at(c, 75, 75).a, 0.0f) << "the mask's rectangle moved out of the mask";
+}
+
+TEST(Filter, OnAnImage) {
+    // The image's pixels go through the filter: red becomes green.
+    const std::string inner = "<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'>"
+                              "<rect width='10' height='10' fill='#f00'/></svg>";
+    const Canvas c = render(
+        "<filter id='f' color-interpolation-filters='sRGB'><feColorMatrix type='matrix' "
+        "values='0 0 0 0 0  1 0 0 0 0  0 0 0 0 0  0 0 0 1 0'/></filter>"
+        "<image x='10' y='10' width='50' height='50' filter='url(#f)' href='data:image/svg+xml," +
+        testing::percent_encoded(inner) + "'/>");
+    EXPECT_EQ(at(c, 30, 30).g, 1.0f);
+    EXPECT_EQ(at(c, 30, 30).r, 0.0f);
+    EXPECT_EQ(at(c, 5, 5).a, 0.0f);
+}
+
+TEST(Filter, FeImageOfAFileFillsItsSubregion) {
+    // Without x, y, width, height, the subregion is the filter region, and
+    // the image is fitted into it (preserveAspectRatio none: stretched).
+    const std::string inner = "<svg xmlns='http://www.w3.org/2000/svg' width='10' height='10'>"
+                              "<rect width='10' height='10' fill='#00f'/></svg>";
+    const Canvas c = render("<filter id='f' filterUnits='userSpaceOnUse' x='20' y='20' "
+                            "width='60' height='30'><feImage preserveAspectRatio='none' "
+                            "href='data:image/svg+xml," +
+                            testing::percent_encoded(inner) +
+                            "'/></filter><rect width='5' height='5' filter='url(#f)'/>");
+    EXPECT_EQ(at(c, 21, 21).b, 1.0f);
+    EXPECT_EQ(at(c, 78, 48).b, 1.0f);
+    EXPECT_EQ(at(c, 50, 55).a, 0.0f);
+    EXPECT_EQ(at(c, 2, 2).a, 0.0f) << "the source is not drawn";
 }
 
 TEST(Filter, HostileValuesAreBounded) {

@@ -260,7 +260,7 @@ std::optional<FilterOp> Reader::filter_op(const pugi::xml_node& e, const Primiti
         return Displacement{number(e, "scale", 0) * diag, channel(e, "xChannelSelector"),
                             channel(e, "yChannelSelector")};
     if (name == "feTile") return Tile{};
-    if (name == "feImage") return image_input(e, style, m, f, depth);
+    if (name == "feImage") return image_input(e, u, style, m, f, depth);
     if (name == "feDiffuseLighting" || name == "feSpecularLighting") {
         const bool specular = name == "feSpecularLighting";
         const auto light = light_of(e, u);
@@ -285,10 +285,11 @@ std::optional<FilterOp> Reader::filter_op(const pugi::xml_node& e, const Primiti
 }
 
 // feImage: an element of this document drawn as <use> would draw it, or an
-// image file placed as <image> places it (x, y, width, height,
-// preserveAspectRatio), in the filtered element's user space.
-FilterOp Reader::image_input(const pugi::xml_node& e, const StyleState& style, const Affine& m,
-                             Filter& f, int depth) {
+// image file fitted into the primitive's subregion (the filter region by
+// default) as <image> fits it into its viewport (preserveAspectRatio), in
+// the filtered element's user space.
+FilterOp Reader::image_input(const pugi::xml_node& e, const PrimitiveUnits& u,
+                             const StyleState& style, const Affine& m, Filter& f, int depth) {
     Group content;
     const char* href = href_of(e);
     if (href[0] == '#') {
@@ -304,7 +305,9 @@ FilterOp Reader::image_input(const pugi::xml_node& e, const StyleState& style, c
             instancing_.pop_back();
         }
     } else if (href[0]) {
-        image(e, style, m, content);
+        const Rect port =
+            subregion(e, u, FilterPrimitive{ImageInput{}, {}, {}, true}, f.graph, style);
+        if (port.width() > 0 && port.height() > 0) image(e, style, m, content, &port);
     }
     f.images.push_back(std::move(content));
     return ImageInput{int(f.images.size()) - 1};

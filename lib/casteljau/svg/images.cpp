@@ -140,13 +140,15 @@ const Reader::ImageSource& Reader::image_source(const pugi::xml_node& n, const s
     return src;
 }
 
-void Reader::image(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out) {
+void Reader::image(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out,
+                   const Rect* given) {
     const char* href = href_of(n);
     if (!style.visible || !href[0]) return;
     const ImageSource& src = image_source(n, href);
     if (!src.raster && !src.svg) return;
     const LengthContext ctx = context(style);
     std::optional<double> w = length(n, "width", vw_, ctx), h = length(n, "height", vh_, ctx);
+    if (given) w = given->width(), h = given->height();
     if (!w && !h) {
         w = src.width, h = src.height;
     } else if (!w) {
@@ -155,8 +157,10 @@ void Reader::image(const pugi::xml_node& n, const StyleState& style, const Affin
         h = *w * src.height / src.width;
     }
     if (!non_negative(n, "width", w) || !non_negative(n, "height", h) || *w == 0 || *h == 0) return;
-    const Affine port = m * Affine::translate({length(n, "x", vw_, ctx).value_or(0),
-                                               length(n, "y", vh_, ctx).value_or(0)});
+    const Affine port =
+        m * Affine::translate(given ? given->min().to_vec()
+                                    : Vec2{length(n, "x", vw_, ctx).value_or(0),
+                                           length(n, "y", vh_, ctx).value_or(0)});
     const Affine fit = view_map(n, ViewBox{0, 0, src.width, src.height}, *w, *h);
     const Rect viewport{0, 0, *w, *h};
     if (src.svg) {

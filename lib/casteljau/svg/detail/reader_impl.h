@@ -178,8 +178,8 @@ class Reader {
     void filter_paints(const pugi::xml_node& n, const Affine& m, Filter& f);
     void read_primitives(const pugi::xml_node& filter, const PrimitiveUnits& u, const Affine& m,
                          Filter& f, int depth);
-    FilterOp image_input(const pugi::xml_node& e, const StyleState& style, const Affine& m,
-                         Filter& f, int depth);
+    FilterOp image_input(const pugi::xml_node& e, const PrimitiveUnits& u,
+                         const StyleState& style, const Affine& m, Filter& f, int depth);
     Rect subregion(const pugi::xml_node& e, const PrimitiveUnits& u, const FilterPrimitive& p,
                    const FilterGraph& g, const StyleState& style);
     std::optional<FilterOp> filter_op(const pugi::xml_node& p, const PrimitiveUnits& u,
@@ -224,7 +224,10 @@ class Reader {
         double width = 0, height = 0;
     };
     const ImageSource& image_source(const pugi::xml_node& n, const std::string& href);
-    void image(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out);
+    // `given`, when given, is the viewport instead of x, y, width, height
+    // (feImage's subregion).
+    void image(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out,
+               const Rect* given = nullptr);
     // Patterns (svg/patterns.cpp): null when disabled (paints nothing).
     std::shared_ptr<const Pattern> pattern(const pugi::xml_node& pat, const Path& path, int depth);
     std::optional<double> non_negative(const pugi::xml_node& n, const char* attr,
