@@ -255,5 +255,23 @@ TEST(Filter, HostileValuesAreBounded) {
     EXPECT_EQ(c.width(), 100);
 }
 
+TEST(Filter, ParametersOfInfiniteFloatGiveValidPixels) {
+    // 1e300 is a finite number to the reader and infinite in float: times a
+    // transparent pixel's 0 it is NaN, which must never reach a pixel (the
+    // fuzzer's nan_from_an_infinite_color_matrix).
+    const Canvas c = render(R"svg(<filter id="f">
+          <feColorMatrix values="1e300 0 0 0 0  0 1 0 0 0  0 0 1 0 0  0 0 0 1e300 0"/>
+          <feComponentTransfer><feFuncG type="gamma" exponent="1e300" amplitude="1e300"/></feComponentTransfer>
+          <feComposite in2="SourceGraphic" operator="arithmetic" k1="1e300" k2="-1e300" k4="1e300"/>
+        </filter><circle cx="50" cy="50" r="30" fill="#808080" filter="url(#f)"/>)svg");
+    for (int y = 0; y < 100; ++y)
+        for (int x = 0; x < 100; ++x) {
+            const Premul p = at(c, x, y);
+            ASSERT_TRUE(p.a >= 0 && p.a <= 1 && p.r >= 0 && p.r <= p.a && p.g >= 0 && p.g <= p.a &&
+                        p.b >= 0 && p.b <= p.a)
+                << x << "," << y;
+        }
+}
+
 } // namespace
 } // namespace casteljau

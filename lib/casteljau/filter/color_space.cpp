@@ -38,7 +38,7 @@ struct Curve {
         y[kSteps + 1] = y[kSteps];
     }
     float operator()(float v) const {
-        const float t = std::clamp(v, 0.0f, 1.0f) * kSteps;
+        const float t = unit_clamp(v) * kSteps;
         const int i = int(t);
         return y[std::size_t(i)] + (y[std::size_t(i) + 1] - y[std::size_t(i)]) * (t - float(i));
     }

@@ -26,7 +26,7 @@ namespace casteljau {
 
 namespace {
 
-float clamp01(float v) { return std::clamp(v, 0.0f, 1.0f); }
+float clamp01(float v) { return unit_clamp(v); }
 
 // Runs f on the straight color of every pixel of the subregion.
 template <class F>

@@ -20,14 +20,6 @@ namespace casteljau {
 
 namespace {
 
-Premul clamped(Premul p) {
-    p.a = std::clamp(p.a, 0.0f, 1.0f);
-    p.r = std::clamp(p.r, 0.0f, p.a);
-    p.g = std::clamp(p.g, 0.0f, p.a);
-    p.b = std::clamp(p.b, 0.0f, p.a);
-    return p;
-}
-
 // a A + b B, channel by channel.
 Premul mix(const Premul& A, float a, const Premul& B, float b) {
     return {A.r * a + B.r * b, A.g * a + B.g * b, A.b * a + B.b * b, A.a * a + B.a * b};
@@ -47,12 +39,12 @@ Premul porter_duff(const Premul& A, const Premul& B, const Composite& c) {
     case Op::Xor:
         return mix(A, 1 - B.a, B, 1 - A.a);
     case Op::Lighter:
-        return clamped(mix(A, 1, B, 1));
+        return valid_pixel(mix(A, 1, B, 1));
     case Op::Arithmetic:
-        return clamped({c.k1 * A.r * B.r + c.k2 * A.r + c.k3 * B.r + c.k4,
-                        c.k1 * A.g * B.g + c.k2 * A.g + c.k3 * B.g + c.k4,
-                        c.k1 * A.b * B.b + c.k2 * A.b + c.k3 * B.b + c.k4,
-                        c.k1 * A.a * B.a + c.k2 * A.a + c.k3 * B.a + c.k4});
+        return valid_pixel({c.k1 * A.r * B.r + c.k2 * A.r + c.k3 * B.r + c.k4,
+                            c.k1 * A.g * B.g + c.k2 * A.g + c.k3 * B.g + c.k4,
+                            c.k1 * A.b * B.b + c.k2 * A.b + c.k3 * B.b + c.k4,
+                            c.k1 * A.a * B.a + c.k2 * A.a + c.k3 * B.a + c.k4});
     }
     return A;
 }

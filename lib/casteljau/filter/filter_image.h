@@ -46,6 +46,19 @@ struct FilterImage {
     }
 };
 
+/// v clamped to [0, 1], NaN to 0: parameters of up to 1e308 become infinite
+/// in float, and infinity times a transparent 0 is NaN, which must not
+/// reach a pixel.
+inline float unit_clamp(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
+
+/// A valid premultiplied pixel near p: alpha in [0, 1], each color in
+/// [0, alpha], NaN as 0.
+inline Premul valid_pixel(Premul p) {
+    p.a = unit_clamp(p.a);
+    const auto below = [&](float v) { return v > 0.0f ? (v < p.a ? v : p.a) : 0.0f; };
+    return {below(p.r), below(p.g), below(p.b), p.a};
+}
+
 /// How a neighbourhood operation reads pixels beyond the input's edges
 /// (feConvolveMatrix and feGaussianBlur edgeMode).
 enum class EdgeMode : unsigned char { None, Duplicate, Wrap };
