@@ -243,6 +243,24 @@ TEST(Filter, FeImageOfAFileFillsItsSubregion) {
     EXPECT_EQ(at(c, 2, 2).a, 0.0f) << "the source is not drawn";
 }
 
+TEST(Filter, RotatedSubregionsAreParallelograms) {
+    // Under a rotation the subregion is the rotated square, not its box: a
+    // red flood over the subregion stays under a green square one unit larger.
+    const Canvas c = render(
+        R"svg(<filter id="f" filterUnits="userSpaceOnUse" x="0" y="0" width="200" height="200">
+          <feFlood flood-color="red" x="70" y="70" width="60" height="60"/></filter>
+        <g transform="rotate(45 100 100)">
+          <rect x="70" y="70" width="60" height="60" filter="url(#f)"/>
+          <rect x="69" y="69" width="62" height="62" fill="#00ff00"/></g>)svg",
+        200);
+    for (int y = 0; y < 200; ++y)
+        for (int x = 0; x < 200; ++x) {
+            const Premul p = at(c, x, y);
+            ASSERT_LT(p.r, 0.01f) << "red at " << x << "," << y;
+        }
+    EXPECT_EQ(at(c, 100, 100).g, 1.0f);
+}
+
 TEST(Filter, HostileValuesAreBounded) {
     // Huge deviations, radii, octaves, kernels and regions: drawn, in bounded work.
     const Canvas c = render(

@@ -323,6 +323,18 @@ struct Step {
     }
 };
 
+// Under a rotation or skew the filter region and the subregions are
+// parallelograms on the device, not their bounding boxes: clears the
+// pixels of `sub` whose centres map outside `user` (the rectangle in user
+// space; `to_user` maps device to user space).
+void cut_to(FilterImage& img, const Subregion& sub, const Rect& user, const Affine& to_user) {
+    for (int y = sub.y0; y < sub.y1; ++y)
+        for (int x = sub.x0; x < sub.x1; ++x) {
+            const Point q = to_user * Point{img.box.x0 + x + 0.5, img.box.y0 + y + 0.5};
+            if (!user.contains(q)) img.at(x, y) = {};
+        }
+}
+
 // The last primitive reading each result (its own index when none does).
 std::vector<std::size_t> last_uses(const FilterGraph& g) {
     std::vector<std::size_t> last(g.primitives.size());
@@ -357,6 +369,10 @@ bool run_filter(const FilterGraph& g, const Affine& to_device, const FilterSourc
     }
     const Scales scales(to_device);
     const PixelRect region = filter_pixel_region(g, to_device);
+    const bool axis_aligned = to_device.b == 0 && to_device.c == 0;
+    const Affine to_user = to_device.inverse();
+    if (!axis_aligned) // the source too: nothing outside the region is read
+        cut_to(source, {0, 0, source.width(), source.height()}, g.region, to_user);
     const std::vector<std::size_t> last = last_uses(g);
     Results results(g.primitives.size(), window, io.pool);
     Inputs inputs(io, results);
@@ -392,6 +408,7 @@ bool run_filter(const FilterGraph& g, const Affine& to_device, const FilterSourc
         } else if (!step.sub.empty()) {
             std::visit(step, p.op);
         }
+        if (!axis_aligned) cut_to(step.out, step.sub, user_sub, to_user);
         for (int k : p.inputs)
             if (k >= 0 && last[std::size_t(k)] == i) {
                 results.free(std::size_t(k));
