@@ -313,7 +313,7 @@ FilterOp Reader::image_input(const pugi::xml_node& e, const PrimitiveUnits& u,
     return ImageInput{int(f.images.size()) - 1};
 }
 
-void Reader::read_primitives(const pugi::xml_node& filter, const PrimitiveUnits& u, const Affine& m,
+bool Reader::read_primitives(const pugi::xml_node& filter, const PrimitiveUnits& u, const Affine& m,
                              Filter& f, int depth) {
     FilterGraph& g = f.graph;
     std::map<std::string, int, std::less<>> results;
@@ -344,10 +344,17 @@ void Reader::read_primitives(const pugi::xml_node& filter, const PrimitiveUnits&
             if (n >= 2) p.inputs.push_back(input(e, "in2"));
         }
         p.subregion = subregion(e, u, p, g, style);
+        if (!(p.subregion.width() > 0 && p.subregion.height() > 0)) {
+            // A subregion with no area is an error that disables the whole
+            // element, as resvg and browsers have it, not this primitive alone.
+            problem(e, "a primitive subregion with no area; the element is not drawn");
+            return false;
+        }
         if (const char* r = e.attribute("result").value(); r[0])
             results[r] = int(g.primitives.size());
         g.primitives.push_back(std::move(p));
     }
+    return true;
 }
 
 // 9.7: x, y, width, height each default to the union of the inputs'

@@ -14,9 +14,9 @@
 // result, or SourceGraphic for the first primitive.
 //
 // Errors (8.3 and resvg's reading of it, which browsers share): a url that
-// names no <filter>, a filter with no primitives, a region with no area,
-// or objectBoundingBox units on an element whose box has no area: the
-// element is not drawn, with a warning. Elements that are not primitives
+// names no <filter>, a filter with no primitives, a region or a primitive
+// subregion with no area, or objectBoundingBox units on an element whose box
+// has no area: the element is not drawn, with a warning. Elements that are not primitives
 // are ignored. A CSS filter function (12.2) is its own one-primitive
 // graph in sRGB, over the element's box with its strokes, grown by what a
 // blur or shadow spreads.
@@ -244,8 +244,9 @@ std::shared_ptr<Filter> Reader::filter_element(const pugi::xml_node& n, const pu
             break;
         }
     instancing_.push_back(f);
-    read_primitives(source, pu, m, *out, depth);
+    const bool ok = read_primitives(source, pu, m, *out, depth);
     instancing_.pop_back();
+    if (!ok) return nullptr;
     filter_paints(n, m, *out);
     if (out->graph.primitives.empty()) {
         problem(f, "a filter with no primitives; the element is not drawn");

@@ -176,7 +176,8 @@ class Reader {
     // One primitive's operation (svg/filter_primitives.cpp); nullopt when
     // the element is not a primitive. `f` gets the drawings it needs.
     void filter_paints(const pugi::xml_node& n, const Affine& m, Filter& f);
-    void read_primitives(const pugi::xml_node& filter, const PrimitiveUnits& u, const Affine& m,
+    // False when a primitive is in error so that the element is not drawn.
+    bool read_primitives(const pugi::xml_node& filter, const PrimitiveUnits& u, const Affine& m,
                          Filter& f, int depth);
     FilterOp image_input(const pugi::xml_node& e, const PrimitiveUnits& u,
                          const StyleState& style, const Affine& m, Filter& f, int depth);
