@@ -170,9 +170,7 @@ class Inputs {
 
 PixelRect device_pixels(const Rect& r, const Affine& m) {
     if (r.is_empty()) return {};
-    const Rect b = Rect::from_points(m * r.min(), m * r.max())
-                       .united(m * Point{r.x0, r.y1})
-                       .united(m * Point{r.x1, r.y0});
+    const Rect b = mapped_box(r, m);
     // Bounded so that the pixel coordinates fit an int with room to spare;
     // the renderer cuts the box to the frame anyway.
     static constexpr double kLimit = 1 << 28;
@@ -384,9 +382,7 @@ bool run_filter(const FilterGraph& g, const Affine& to_device, const FilterSourc
             return false;
         }
         const Rect user_sub = p.subregion.intersected(g.region);
-        const PixelRect px = device_pixels(user_sub, to_device);
-        const PixelRect cut{std::max(px.x0, region.x0), std::max(px.y0, region.y0),
-                            std::min(px.x1, region.x1), std::min(px.y1, region.y1)};
+        const PixelRect cut = device_pixels(user_sub, to_device).intersected(region);
         Step step{p,
                   to_device,
                   scales,

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "casteljau/geom/point.h"
+#include "casteljau/geom/rect.h"
 
 #include <cmath>
 #include <numbers>
@@ -69,5 +70,14 @@ struct Affine {
 };
 
 constexpr double degrees_to_radians(double deg) { return deg * (std::numbers::pi / 180.0); }
+
+/// The box of `b` mapped by `m`: its four corners mapped (conservative
+/// under rotation, exact otherwise); empty when `b` is.
+inline Rect mapped_box(const Rect& b, const Affine& m) {
+    if (b.is_empty()) return b;
+    return Rect::from_points(m * b.min(), m * b.max())
+        .united(m * Point{b.x0, b.y1})
+        .united(m * Point{b.x1, b.y0});
+}
 
 } // namespace casteljau

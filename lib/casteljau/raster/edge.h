@@ -22,6 +22,7 @@
 
 #include "casteljau/geom/point.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace casteljau {
@@ -33,6 +34,18 @@ struct PixelRect {
     int width() const { return x1 - x0; }
     /// Number of rows.
     int height() const { return y1 - y0; }
+    /// Whether it holds no pixel.
+    bool is_empty() const { return x1 <= x0 || y1 <= y0; }
+    /// The pixels in both (possibly empty).
+    PixelRect intersected(const PixelRect& r) const {
+        return {std::max(x0, r.x0), std::max(y0, r.y0), std::min(x1, r.x1), std::min(y1, r.y1)};
+    }
+    /// The smallest rectangle holding both; an empty one adds nothing.
+    PixelRect united(const PixelRect& r) const {
+        if (r.is_empty()) return *this;
+        if (is_empty()) return r;
+        return {std::min(x0, r.x0), std::min(y0, r.y0), std::max(x1, r.x1), std::max(y1, r.y1)};
+    }
 };
 
 /// A clipped, directed line segment in device pixels, top to bottom.

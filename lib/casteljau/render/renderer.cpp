@@ -28,14 +28,6 @@ void add_stage_ms(double& ms, const RenderOptions& o, Clock::time_point start) {
         ms += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The device box of a user-space box: its four corners mapped (conservative
-// under rotation, exact otherwise).
-Rect device_box(const Rect& b, const Affine& m) {
-    if (b.is_empty()) return b;
-    return Rect::from_points(m * b.min(), m * b.max())
-        .united(m * Point{b.x0, b.y1})
-        .united(m * Point{b.x1, b.y0});
-}
 
 } // namespace
 
@@ -101,7 +93,7 @@ void Renderer::begin(const Affine& view, const RenderOptions& options, const Pix
 
 Rect Renderer::reach_box(const Shape& s, const Affine& view) {
     const Affine m = view * s.transform;
-    return device_box(s.path.control_bounds(), m).inflated(stroke_reach(s, m));
+    return mapped_box(s.path.control_bounds(), m).inflated(stroke_reach(s, m));
 }
 
 Rect Renderer::node_reach_box(const Node& n, const Affine& view) {
@@ -295,7 +287,7 @@ void Renderer::draw_stroke(const Shape& s, const Affine& m, Target& target, floa
         const Rect pixels{double(frame_.x0 - 1), double(strip - 1), double(frame_.x1 + 1),
                           double(std::min(frame_.y1, strip + kStrokeStripRows) + 1)};
         const std::span<const Polygon> outline =
-            stroker_.outline(s.path, *geometry, tolerance, device_box(pixels, to_user));
+            stroker_.outline(s.path, *geometry, tolerance, mapped_box(pixels, to_user));
         edges_.reset(frame_, y0, y1);
         for (const Polygon& poly : outline) {
             for (std::size_t i = 0; i < poly.size(); ++i)
@@ -404,7 +396,6 @@ bool Renderer::prepare_pattern(const Pattern& p, const Affine& m, float opacity)
         p.smooth, p.repeat);
 }
 
-
 namespace {
 
 // The pixels of `c` into `img` (its box: the canvas's place), as float.
@@ -417,11 +408,6 @@ void to_filter_image(const BasicCanvas<Pixel>& c, FilterImage& img) {
         Premul* out = &img.at(0, y);
         for (int x = 0; x < c.width(); ++x) out[x] = to_premul(row[x]);
     }
-}
-
-PixelRect intersect(const PixelRect& a, const PixelRect& b) {
-    return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1),
-            std::min(a.y1, b.y1)};
 }
 
 PixelRect grown(const PixelRect& r, double by) {
@@ -442,18 +428,13 @@ bool Renderer::filter_layer(const Group& g, Target& layer) {
     for (const auto& f : g.filters) {
         const Affine m = view_ * f->transform;
         reach += filter_reach(f->graph, m);
-        const PixelRect r = filter_pixel_region(f->graph, m);
-        regions = regions.width() > 0 ? PixelRect{std::min(regions.x0, r.x0),
-                                                  std::min(regions.y0, r.y0),
-                                                  std::max(regions.x1, r.x1),
-                                                  std::max(regions.y1, r.y1)}
-                                      : r;
+        regions = regions.united(filter_pixel_region(f->graph, m));
     }
     const PixelRect target{layer.origin_x(), layer.origin_y(), layer.origin_x() + layer.width(),
                            layer.origin_y() + layer.height()};
     const PixelRect frame = grown(frame_, std::min(reach, double(kMaxFilterMargin)));
-    const PixelRect window = intersect(intersect(regions, frame), grown(target, reach));
-    if (window.width() <= 0 || window.height() <= 0) return true; // nothing to draw here
+    const PixelRect window = regions.intersected(frame).intersected(grown(target, reach));
+    if (window.is_empty()) return true; // nothing to draw here
     Target* src = acquire_layer<Target>(window.width(), window.height(), window.x0, window.y0);
     if (!src) return false;
     if (filter_buffers_.size() <= filter_depth_)
@@ -465,7 +446,8 @@ bool Renderer::filter_layer(const Group& g, Target& layer) {
     to_filter_image(*src, buf.source);
     release_layer();
     bool ok = true;
-    for (const auto& f : g.filters) {
+    for (std::size_t k = 0; ok && k < g.filters.size(); ++k) {
+        const Filter* f = g.filters[k].get();
         const std::size_t n = f->images.size();
         buf.inputs.resize(std::max(buf.inputs.size(), n + 2));
         for (std::size_t i = 0; i < n; ++i) draw_filter_input(f->images[i], window, buf.inputs[i]);
@@ -474,13 +456,13 @@ bool Renderer::filter_layer(const Group& g, Target& layer) {
         const FilterSources io{&buf.source, {buf.inputs.data(), n}, &buf.inputs[n],
                                &buf.inputs[n + 1], &buf.pool};
         const auto t = stage_start(*options_);
-        ok = ok && run_filter(f->graph, view_ * f->transform, io);
+        ok = run_filter(f->graph, view_ * f->transform, io);
         add_stage_ms(stats_.raster_ms, *options_, t);
     }
     frame_ = saved;
     --filter_depth_;
     if (!ok) return false;
-    const PixelRect out = intersect(window, target);
+    const PixelRect out = window.intersected(target);
     for (int y = out.y0; y < out.y1; ++y) {
         auto* row = layer.row(y - layer.origin_y());
         for (int x = out.x0; x < out.x1; ++x)

@@ -189,24 +189,9 @@ bool Reader::apply_filters(const pugi::xml_node& n, const ElementProps& props, c
 
 std::shared_ptr<Filter> Reader::filter_element(const pugi::xml_node& n, const pugi::xml_node& f,
                                                const Affine& m, const BoxOf& bbox, int depth) {
-    const std::vector<pugi::xml_node> chain = href_chain(
-        f, "<filter>", [&](const char* id) { return by_id(id); },
-        [](const pugi::xml_node& e) { return std::strcmp(e.name(), "filter") == 0; },
-        [&](const pugi::xml_node& e, const std::string& what) { problem(e, what); });
-    // An attribute from the first filter of the chain that has it.
-    const auto attr = [&](const char* name) {
-        for (const pugi::xml_node& e : chain)
-            if (const pugi::xml_attribute a = e.attribute(name)) return a;
-        return pugi::xml_attribute();
-    };
-    const auto units = [&](const char* name, bool initial_obb) {
-        const std::string_view v = attr(name).value();
-        if (v == "objectBoundingBox" || v == "userSpaceOnUse") return v == "objectBoundingBox";
-        if (!v.empty()) problem(f, std::string(name) + ": '" + std::string(v) + "' is invalid");
-        return initial_obb;
-    };
-    const bool region_obb = units("filterUnits", true);
-    PrimitiveUnits pu{units("primitiveUnits", false), Rect::empty()};
+    const std::vector<pugi::xml_node> chain = same_kind_chain(f);
+    const bool region_obb = units_of(chain, "filterUnits", true);
+    PrimitiveUnits pu{units_of(chain, "primitiveUnits", false), Rect::empty()};
     if (region_obb || pu.obb) {
         pu.bbox = bbox();
         if (!(pu.bbox.width() > 0 && pu.bbox.height() > 0)) {
@@ -217,7 +202,7 @@ std::shared_ptr<Filter> Reader::filter_element(const pugi::xml_node& n, const pu
     ElementProps fprops;
     const LengthContext ctx = context(style_of(f, fprops));
     const auto at = [&](const char* name, double initial, double full) {
-        const pugi::xml_attribute a = attr(name);
+        const pugi::xml_attribute a = chain_attribute(chain, name);
         const auto v = a ? parse_length(a.value(), region_obb ? 1 : full, ctx) : std::nullopt;
         if (a && !v) problem(f, std::string(name) + ": '" + a.value() + "' is not a length");
         return v.value_or(region_obb ? initial : initial * full);

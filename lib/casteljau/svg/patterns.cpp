@@ -33,28 +33,32 @@ bool has_element_children(const pugi::xml_node& n) {
 
 } // namespace
 
+std::vector<pugi::xml_node> Reader::same_kind_chain(const pugi::xml_node& start) {
+    const std::string kind = start.name();
+    return href_chain(
+        start, kind.c_str(), [&](const char* id) { return by_id(id); },
+        [&](const pugi::xml_node& n) { return kind == n.name(); },
+        [&](const pugi::xml_node& n, const std::string& what) { problem(n, what); });
+}
+
+bool Reader::units_of(const std::vector<pugi::xml_node>& chain, const char* name,
+                      bool initial_obb) {
+    const pugi::xml_attribute a = chain_attribute(chain, name);
+    const std::string_view v = a.value();
+    if (v == "objectBoundingBox") return true;
+    if (v == "userSpaceOnUse") return false;
+    if (!v.empty())
+        problem(chain.front(), std::string(name) + ": '" + std::string(v) + "' is invalid");
+    return initial_obb;
+}
+
 std::shared_ptr<const Pattern> Reader::pattern(const pugi::xml_node& pat, const Path& path,
                                                int depth) {
     if (const auto it = patterns_.find(pat.internal_object()); it != patterns_.end())
         return it->second;
-    const std::vector<pugi::xml_node> chain = href_chain(
-        pat, "pattern", [&](const char* id) { return by_id(id); },
-        [](const pugi::xml_node& n) { return std::strcmp(n.name(), "pattern") == 0; },
-        [&](const pugi::xml_node& n, const std::string& what) { problem(n, what); });
-    const auto attr = [&](const char* name) {
-        for (const pugi::xml_node& p : chain)
-            if (const pugi::xml_attribute a = p.attribute(name)) return a;
-        return pugi::xml_attribute();
-    };
-    const auto units = [&](const char* name, bool obb_initially) {
-        const std::string_view v = attr(name).value();
-        if (v == "objectBoundingBox") return true;
-        if (v == "userSpaceOnUse") return false;
-        if (!v.empty()) problem(pat, std::string(name) + ": '" + std::string(v) + "' is invalid");
-        return obb_initially;
-    };
-    const bool tile_obb = units("patternUnits", true);
-    const bool content_obb = units("patternContentUnits", false);
+    const std::vector<pugi::xml_node> chain = same_kind_chain(pat);
+    const bool tile_obb = units_of(chain, "patternUnits", true);
+    const bool content_obb = units_of(chain, "patternContentUnits", false);
     std::optional<ViewBox> box;
     for (const pugi::xml_node& p : chain)
         if (p.attribute("viewBox")) {
@@ -82,7 +86,7 @@ std::shared_ptr<const Pattern> Reader::pattern(const pugi::xml_node& pat, const 
     out->width = w;
     out->height = h;
     Affine transform = Affine::identity();
-    if (const pugi::xml_attribute t = attr("patternTransform")) {
+    if (const pugi::xml_attribute t = chain_attribute(chain, "patternTransform")) {
         const TransformResult tr = parse_transform_list(t.value());
         if (tr.error.empty())
             transform = tr.transform;

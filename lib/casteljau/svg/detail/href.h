@@ -51,4 +51,13 @@ std::vector<pugi::xml_node> href_chain(const pugi::xml_node& start, const char* 
     return chain;
 }
 
+/// Attribute `name` of the first element of `chain` that has it (the chain
+/// inherits what it lacks), or a null attribute when none has it.
+inline pugi::xml_attribute chain_attribute(const std::vector<pugi::xml_node>& chain,
+                                           const char* name) {
+    for (const pugi::xml_node& e : chain)
+        if (const pugi::xml_attribute a = e.attribute(name)) return a;
+    return pugi::xml_attribute();
+}
+
 } // namespace casteljau::svg_detail

@@ -229,6 +229,12 @@ class Reader {
     // (feImage's subregion).
     void image(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out,
                const Rect* given = nullptr);
+    // The href chain of `start` through elements named like it (patterns,
+    // filters), problems told (svg/patterns.cpp).
+    std::vector<pugi::xml_node> same_kind_chain(const pugi::xml_node& start);
+    // Units attribute `name` along `chain`: objectBoundingBox (true) or
+    // userSpaceOnUse; `initial_obb` when absent, or invalid (a problem).
+    bool units_of(const std::vector<pugi::xml_node>& chain, const char* name, bool initial_obb);
     // Patterns (svg/patterns.cpp): null when disabled (paints nothing).
     std::shared_ptr<const Pattern> pattern(const pugi::xml_node& pat, const Path& path, int depth);
     std::optional<double> non_negative(const pugi::xml_node& n, const char* attr,
