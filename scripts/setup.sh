@@ -15,6 +15,8 @@ packages=(
   clang libclang-rt-14-dev
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
   python3-dask python3-distributed python3-pil
+  libfontconfig-dev libfreetype-dev libharfbuzz-dev libfribidi-dev
+  fonts-dejavu-core fonts-noto-core fonts-noto-mono
 )
 
 missing=()

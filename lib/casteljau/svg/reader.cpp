@@ -186,15 +186,16 @@ std::vector<std::string> Reader::declarations(const pugi::xml_node& n, std::stri
 }
 
 // Applies the element's declarations (see cascade). Without `props`, only
-// font-size: the first of two passes, since every other length may be in
-// em. An invalid value is a problem, and the property keeps what it had.
+// font-size and the font shorthand (which sets it): the first of two
+// passes, since every other length may be in em. An invalid value is a
+// problem, and the property keeps what it had.
 void Reader::apply_declarations(const pugi::xml_node& n, const StyleState& parent,
                                 StyleState& style, ElementProps* props, const LengthContext& ctx) {
     if (!props)
         for (const pugi::xml_attribute& a : n.attributes()) check_length_limit(n, a);
     ElementProps unused;
     const auto apply = [&](std::string_view name, std::string_view value, const char* from) {
-        if ((name == "font-size") == (props != nullptr)) return;
+        if ((name == "font-size" || name == "font") == (props != nullptr)) return;
         const std::string e =
             apply_property(name, value, parent, style, props ? *props : unused, ctx);
         if (!e.empty()) problem(n, from + e + "; ignored");
@@ -275,15 +276,15 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
     const std::string_view name = n.name();
     if (name.find(':') != name.npos || silently_skipped(name)) return; // foreign namespaces
     const bool group = name == "g" || name == "a";
-    const bool structure =
-        group || name == "switch" || name == "svg" || name == "use" || name == "image";
+    const bool structure = group || name == "switch" || name == "svg" || name == "use" ||
+                           name == "image" || name == "text";
     if (!structure && !is_shape(name)) {
         if (unsupported(name)) warn(n, "not supported yet; skipped");
         return; // symbol too: drawn only through <use>
     }
-    // A clip path holds shapes and uses of shapes; any other child is
+    // A clip path holds shapes, text and uses of them; any other child is
     // invalid there and ignored (CSS Masking 1, 6.1).
-    if (clip_mode_ && !is_shape(name) && name != "use") return;
+    if (clip_mode_ && !is_shape(name) && name != "use" && name != "text") return;
     if (!conditions_hold(n)) return;
     StyleState style = parent_style;
     ElementProps props;
@@ -321,6 +322,8 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
         use(n, style, m, g, depth);
     } else if (name == "image") {
         image(n, style, m, g);
+    } else if (name == "text") {
+        text(n, style, props, m, g, depth);
     } else if (depth_ = depth; std::optional<Shape> sh = shape(n, name, style, m, props)) {
         const bool markable =
             name == "path" || name == "line" || name == "polyline" || name == "polygon";
@@ -373,6 +376,11 @@ std::optional<Shape> Reader::shape(const pugi::xml_node& n, std::string_view nam
                                    const ElementProps& props) {
     Path path = geometry(n, name, context(style));
     if (!style.visible || path.empty()) return std::nullopt;
+    return painted(n, std::move(path), style, m, props);
+}
+
+Shape Reader::painted(const pugi::xml_node& n, Path path, const StyleState& style, const Affine& m,
+                      const ElementProps& props, const Path* box) {
     Shape s;
     s.path = std::move(path);
     s.transform = m;
@@ -384,9 +392,10 @@ std::optional<Shape> Reader::shape(const pugi::xml_node& n, std::string_view nam
         s.fill = Fill{{0, 0, 0, 1}, nullptr, 1, style.clip_rule, nullptr};
         return s;
     }
-    if (const auto p = paint(n, style.fill, style, s.path))
+    const Path& of = box ? *box : s.path;
+    if (const auto p = paint(n, style.fill, style, of))
         s.fill = Fill{p->color, p->gradient, style.fill_opacity, style.fill_rule, p->pattern};
-    if (const auto p = paint(n, style.stroke, style, s.path); p && style.stroke_geometry.width > 0)
+    if (const auto p = paint(n, style.stroke, style, of); p && style.stroke_geometry.width > 0)
         s.stroke =
             Stroke{p->color, p->gradient, style.stroke_opacity, style.stroke_geometry, p->pattern};
     if (props.non_scaling_stroke && s.stroke) to_host_space(s);

@@ -22,6 +22,7 @@
 #pragma once
 
 #include "casteljau/scene/scene.h"
+#include "casteljau/text/font_database.h"
 
 #include <cstddef>
 #include <memory>
@@ -77,6 +78,13 @@ struct SvgOptions {
     /// How deep this document is as an SVG image in SVG images: 0 for the
     /// document read, set by the reader for the images it reads.
     int image_depth = 0;
+    /// Where text finds its fonts; null for FontDatabase::system() (the
+    /// system's fonts, FONTCONFIG_FILE honoured, plus the CLI's --font-dir).
+    FontDatabase* fonts = nullptr;
+    /// Characters of text in a document, at most (a glyph's outline is
+    /// about 2 KiB once read, so 1e5 of them are about 200 MiB); the text
+    /// past the limit is not drawn, with a warning.
+    std::size_t max_text_characters = 100'000;
 };
 
 /// A located message about the input.

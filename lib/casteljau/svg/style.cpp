@@ -191,8 +191,6 @@ std::optional<double> parse_length(std::string_view text, double percent_of,
     return std::nullopt;
 }
 
-namespace {
-
 // font-size (CSS Fonts 4, 2.5): a keyword of the absolute-size scale (medium
 // is the initial 16 px), larger or smaller (a factor of 1.2, as browsers
 // step), or a non-negative length; em and % against the parent's size.
@@ -209,6 +207,8 @@ std::optional<double> parse_font_size(std::string_view v, double parent, const L
     of_parent.font_size = parent;
     return at_least(parse_length(v, parent, of_parent), 0);
 }
+
+namespace {
 
 // transform-origin: one to three values, each a length, a percentage or a
 // keyword (left, center, right for x; top, center, bottom for y; a single y
@@ -303,6 +303,7 @@ std::optional<Rgba> resolve_paint(const PaintSpec& p, const StyleState& s) {
 std::string apply_property(std::string_view name, std::string_view value, const StyleState& parent,
                            StyleState& s, ElementProps& props, const LengthContext& ctx) {
     value = trim(value);
+    if (auto e = apply_text_property(name, value, parent, s, props, ctx)) return *e;
     const bool inherit = value == "inherit";
     // Every property the same way: `inherit` takes the parent's value, a
     // value that parses is taken, anything else is an error.

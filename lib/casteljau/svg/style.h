@@ -23,6 +23,7 @@
 #include "casteljau/paint/color.h"
 #include "casteljau/raster/sweep.h"
 #include "casteljau/scene/scene.h"
+#include "casteljau/svg/text_properties.h"
 
 #include <array>
 #include <optional>
@@ -82,6 +83,7 @@ struct StyleState {
     /// image-rendering: false for optimizeSpeed, pixelated and crisp-edges
     /// (an image's nearest pixel, not a bilinear blend).
     bool smooth_images = true;
+    TextState text; ///< the inherited text properties (svg/text_properties.h)
 };
 
 /// Not inherited: reset for every element.
@@ -118,6 +120,7 @@ struct ElementProps {
     std::optional<Rgba> flood_color = Rgba{0, 0, 0, 1};
     float flood_opacity = 1;
     std::optional<Rgba> lighting_color = Rgba{1, 1, 1, 1};
+    TextProps text; ///< the text properties that are not inherited
 };
 
 /// Applies one property. Returns "" when applied or unknown, otherwise what is
@@ -135,6 +138,11 @@ std::optional<double> parse_number(std::string_view text, std::string_view* rest
 /// nullopt when malformed, not finite, or in an unknown unit.
 std::optional<double> parse_length(std::string_view text, double percent_of = 0,
                                    const LengthContext& ctx = {});
+
+/// A font-size: a keyword (xx-small to xxx-large, larger, smaller) or a
+/// non-negative length, em and % of `parent` (the parent's font size);
+/// nullopt when invalid. Shared with the font shorthand.
+std::optional<double> parse_font_size(std::string_view v, double parent, const LengthContext& ctx);
 
 /// Resolves a paint to a color; nullopt for none.
 std::optional<Rgba> resolve_paint(const PaintSpec& p, const StyleState& s);

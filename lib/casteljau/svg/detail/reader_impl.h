@@ -46,7 +46,7 @@ inline bool silently_skipped(std::string_view n) {
 // through use) is unknown to SVG, and an unknown element is not rendered
 // (SVG 2, 5.9 "unknown elements"): no warning.
 inline bool unsupported(std::string_view n) {
-    static const std::set<std::string_view> names = {"text", "foreignObject"};
+    static const std::set<std::string_view> names = {"foreignObject"};
     return names.count(n) != 0;
 }
 
@@ -54,6 +54,10 @@ inline bool is_shape(std::string_view n) {
     return n == "path" || n == "rect" || n == "circle" || n == "ellipse" || n == "line" ||
            n == "polyline" || n == "polygon";
 }
+
+struct TextReading;
+struct TextContent;
+struct TextLayout;
 
 // A filter's primitiveUnits, and the box objectBoundingBox refers to.
 struct PrimitiveUnits {
@@ -207,6 +211,25 @@ class Reader {
     pugi::xml_node by_id(const std::string& id);
     std::optional<Shape> shape(const pugi::xml_node& n, std::string_view name,
                                const StyleState& style, const Affine& m, const ElementProps& props);
+    // A path painted as `n`'s style says; `box` is what objectBoundingBox
+    // paints refer to (the path itself when null).
+    Shape painted(const pugi::xml_node& n, Path path, const StyleState& style, const Affine& m,
+                  const ElementProps& props, const Path* box = nullptr);
+    // <text> (svg/text.cpp): reading its content, then drawing its layout.
+    FontDatabase& fonts() const {
+        return options_.fonts ? *options_.fonts : FontDatabase::system();
+    }
+    void text(const pugi::xml_node& n, const StyleState& style, const ElementProps& props,
+              const Affine& m, Group& out, int depth);
+    void text_characters(const pugi::xml_node& at, std::string_view utf8, std::uint32_t span,
+                         TextReading& r);
+    bool text_span(const pugi::xml_node& e, TextReading& r, std::uint32_t parent);
+    void text_positions(const pugi::xml_node& e, TextReading& r);
+    void text_children(const pugi::xml_node& e, TextReading& r, int depth);
+    void text_length(const pugi::xml_node& e, std::size_t begin, TextReading& r);
+    bool text_path(const pugi::xml_node& e, TextReading& r);
+    void draw_text(const TextContent& content, const TextLayout& layout, const Affine& m,
+                   const ElementProps& props, Group& out);
     // A paint: a color, or a gradient by url(#id) with its fallback color
     // when the reference names no usable gradient (SVG 1.1, 11.2).
     struct ResolvedPaint {
@@ -248,6 +271,7 @@ class Reader {
     std::vector<SvgDiagnostic> warnings_;
     std::set<std::string> warned_;
     std::size_t elements_ = 0;
+    std::size_t text_characters_ = 0; // read so far, against max_text_characters
     double root_font_size_ = 16;
     double vw_ = 0, vh_ = 0; // viewport size in user units, for percentages
     std::optional<svg_detail::GradientIndex> gradients_;

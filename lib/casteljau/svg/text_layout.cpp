@@ -1,0 +1,271 @@
+// Text layout of SVG 2, 11.8.3 ("the text layout algorithm"), simplified to
+// what one line per chunk needs (SVG has no line breaking):
+//   1. Chunks: a new one starts at each character with an absolute x or y,
+//      and where a textPath starts or ends.
+//   2. Each chunk is shaped as a paragraph (text/layout.h): bidi, fonts with
+//      fallback, HarfBuzz; clusters come in visual order.
+//   3. The pen walks the clusters: each cluster's characters' dx and dy move
+//      it first; it then advances by the cluster's advance, letter-spacing and,
+//      after a word separator, word-spacing; textLength spreads what is left
+//      over the gaps between clusters (lengthAdjust="spacing"), or scales
+//      advances and glyphs along the line (spacingAndGlyphs).
+//   4. text-anchor moves the chunk by its advance (all of it for end, half
+//      for middle; start and end swap in right-to-left text).
+//   5. Baselines: each span sits on its alignment-baseline (else the
+//      dominant-baseline), read from its font's metrics, raised by its
+//      baseline-shift (sub and super: 0.2 and 0.4 em, as librsvg and resvg).
+//   6. On a textPath, x is a distance along the path: each cluster is set
+//      where its middle falls, turned to the path's direction there, and
+//      not drawn when its middle falls off the path (SVG 2, 11.8.3, step 8).
+//   7. Vertical writing modes advance down the line; CJK characters stand
+//      upright, others turn 90 degrees (glyph-orientation-vertical: auto).
+#include "casteljau/curve/path_measure.h"
+#include "casteljau/svg/detail/text_content.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace casteljau::svg_detail {
+
+TextStyle text_style(const StyleState& s) {
+    TextStyle t;
+    const TextState& ts = s.text;
+    t.font = {ts.font_family, ts.font_weight, ts.font_style, ts.font_stretch};
+    t.size = s.font_size;
+    t.size_adjust = ts.font_size_adjust;
+    t.variations = ts.variations;
+    t.features = ts.features;
+    if (!ts.kerning) t.features.push_back({{'k', 'e', 'r', 'n'}, false});
+    if (ts.small_caps) t.features.push_back({{'s', 'm', 'c', 'p'}, true});
+    t.letter_spacing = ts.letter_spacing;
+    t.word_spacing = ts.word_spacing;
+    return t;
+}
+
+namespace {
+
+// Characters set upright in vertical text (UAX #50's U class, roughly):
+// Han, kana, Hangul, and the CJK symbols and full-width forms.
+bool upright(char32_t c) {
+    return (c >= 0x1100 && c <= 0x11FF) || (c >= 0x2E80 && c <= 0xA4CF) ||
+           (c >= 0xAC00 && c <= 0xD7AF) || (c >= 0xF900 && c <= 0xFAFF) ||
+           (c >= 0xFE30 && c <= 0xFE4F) || (c >= 0xFF00 && c <= 0xFFEF) ||
+           (c >= 0x20000 && c <= 0x3FFFF);
+}
+
+struct Cluster {
+    std::size_t g0 = 0, g1 = 0;       // its glyphs in the chunk's glyph list
+    std::size_t begin = 0, end = 0;   // its characters
+    std::uint32_t span = 0;
+    double advance = 0;               // along the line, px, spacing included
+    double stretch = 1;               // spacingAndGlyphs
+    double extra = 0;                 // textLength's spacing after it
+    Point pen;                        // where its origin is, before anchoring
+    bool upright = false;
+};
+
+class Layouter {
+  public:
+    Layouter(FontDatabase& fonts, const TextContent& c) : fonts_(fonts), c_(c) {
+        for (const TextSpan& s : c.spans) styles_.push_back(text_style(s.style));
+        primary_.resize(c.spans.size());
+        for (std::size_t i = 0; i < c.spans.size(); ++i)
+            if (const auto face = fonts.match(styles_[i].font))
+                primary_[i] = fonts.font(*face, styles_[i].variations);
+    }
+
+    TextLayout run() {
+        for (std::size_t b = 0; b < c_.chars.size();) {
+            std::size_t e = b + 1;
+            while (e < c_.chars.size() && !starts_chunk(e)) ++e;
+            chunk(b, e);
+            b = e;
+        }
+        return std::move(out_);
+    }
+
+  private:
+    bool starts_chunk(std::size_t i) const {
+        return c_.chars[i].x || c_.chars[i].y ||
+               c_.spans[c_.chars[i].span].text_path != c_.spans[c_.chars[i - 1].span].text_path;
+    }
+    const TextSpan& span_of(std::size_t i) const { return c_.spans[c_.chars[i].span]; }
+    bool vertical(std::size_t i) const {
+        return span_of(i).style.text.writing_mode != WritingMode::HorizontalTb;
+    }
+    // px per font unit of a span's first font, and its metrics.
+    double unit(std::uint32_t span) const {
+        return primary_[span] ? styles_[span].size / primary_[span]->metrics().units_per_em : 0;
+    }
+    // The span's baseline below the line's alphabetic one, px (y down).
+    double baseline(std::uint32_t span) const {
+        const TextSpan& s = c_.spans[span];
+        Baseline b = s.props.alignment_baseline != Baseline::Auto ? s.props.alignment_baseline
+                                                                   : s.style.text.dominant_baseline;
+        double up = 0;
+        if (primary_[span]) {
+            const FontMetrics& m = primary_[span]->metrics();
+            switch (b) {
+            case Baseline::Auto:
+            case Baseline::Alphabetic: up = 0; break;
+            case Baseline::Ideographic:
+            case Baseline::TextAfterEdge: up = m.descender; break;
+            case Baseline::Middle: up = m.x_height / 2; break;
+            case Baseline::Central: up = (m.ascender + m.descender) / 2; break;
+            case Baseline::Mathematical: up = m.ascender / 2; break;
+            case Baseline::Hanging: up = m.ascender * 0.8; break; // as resvg, for fonts without BASE
+            case Baseline::TextBeforeEdge: up = m.ascender; break;
+            }
+        }
+        return up * unit(span) - s.baseline_shift;
+    }
+
+    std::vector<Cluster> clusters_of(const std::vector<LaidGlyph>& glyphs, bool vert) const;
+    void apply_text_lengths(std::vector<Cluster>& cl) const;
+    void chunk(std::size_t b, std::size_t e);
+    void place(const std::vector<LaidGlyph>& glyphs, const Cluster& c, const Affine& at);
+
+    FontDatabase& fonts_;
+    const TextContent& c_;
+    std::vector<TextStyle> styles_;
+    std::vector<std::shared_ptr<const Font>> primary_;
+    Point pen_; // where the next chunk starts when it gives no x or y
+    TextLayout out_;
+};
+
+std::vector<Cluster> Layouter::clusters_of(const std::vector<LaidGlyph>& glyphs, bool vert) const {
+    std::vector<Cluster> cl;
+    for (std::size_t i = 0; i < glyphs.size(); ++i) {
+        const LaidGlyph& g = glyphs[i];
+        if (g.first || cl.empty())
+            cl.push_back({i, i, g.begin, g.end, c_.chars[g.begin].span, 0, 1, 0, {}, false});
+        Cluster& c = cl.back();
+        c.g1 = i + 1;
+        const int orientation = c_.spans[c.span].style.text.glyph_orientation_vertical;
+        c.upright = vert && (orientation == 0 || (orientation < 0 && upright(c_.chars[c.begin].c)));
+        c.advance += c.upright && g.font ? g.font->vertical_advance(g.glyph) * g.scale : g.advance.x;
+    }
+    for (Cluster& c : cl) {
+        const TextStyle& s = styles_[c.span];
+        c.advance += s.letter_spacing;
+        if (is_word_separator(c_.chars[c.begin].c)) c.advance += s.word_spacing;
+    }
+    return cl;
+}
+
+void Layouter::apply_text_lengths(std::vector<Cluster>& cl) const {
+    for (const TextLengthSpec& L : c_.lengths) {
+        double natural = 0;
+        std::size_t n = 0, last = 0;
+        for (std::size_t i = 0; i < cl.size(); ++i)
+            if (cl[i].begin >= L.begin && cl[i].begin < L.end) natural += cl[i].advance, ++n, last = i;
+        if (n == 0 || natural <= 0) continue;
+        for (std::size_t i = 0; i < cl.size(); ++i) {
+            if (cl[i].begin < L.begin || cl[i].begin >= L.end) continue;
+            if (L.glyphs)
+                cl[i].stretch = L.length / natural;
+            else if (n > 1 && i != last)
+                cl[i].extra = (L.length - natural) / double(n - 1);
+        }
+    }
+}
+
+void Layouter::chunk(std::size_t b, std::size_t e) {
+    const bool vert = vertical(b);
+    std::u32string text;
+    std::vector<std::uint32_t> style_of;
+    for (std::size_t i = b; i < e; ++i) text.push_back(c_.chars[i].c), style_of.push_back(c_.chars[i].span);
+    const TextDirection dir = vert                             ? TextDirection::Ttb
+                              : span_of(b).style.text.rtl      ? TextDirection::Rtl
+                                                               : TextDirection::Ltr;
+    std::vector<LaidGlyph> glyphs = shape_paragraph(fonts_, text, styles_, style_of, dir);
+    for (LaidGlyph& g : glyphs) g.begin += b, g.end += b;
+    std::vector<Cluster> cl = clusters_of(glyphs, vert);
+    apply_text_lengths(cl);
+    const int path = span_of(b).text_path;
+    const Point start{path >= 0 ? 0 : c_.chars[b].x.value_or(pen_.x),
+                      path >= 0 ? 0 : c_.chars[b].y.value_or(pen_.y)};
+    Point pen = start;
+    for (Cluster& c : cl) {
+        for (std::size_t i = c.begin; i < c.end; ++i) pen = pen + Vec2{c_.chars[i].dx, c_.chars[i].dy};
+        c.pen = pen;
+        const double step = c.advance * c.stretch + c.extra;
+        pen = pen + (vert ? Vec2{0, step} : Vec2{step, 0});
+    }
+    // text-anchor: the chunk moved by its advance, or half of it.
+    const double length = vert ? pen.y - start.y : pen.x - start.x;
+    const TextState& ts = span_of(b).style.text;
+    const bool rtl = ts.rtl && !vert;
+    const double shift = ts.anchor == TextAnchor::Middle ? -length / 2
+                         : (ts.anchor == TextAnchor::End) != rtl ? -length
+                                                                 : 0;
+    const Vec2 move = vert ? Vec2{0, shift} : Vec2{shift, 0};
+    for (Cluster& c : cl) c.pen = c.pen + move;
+    pen_ = pen + move;
+    if (path < 0) {
+        for (const Cluster& c : cl) place(glyphs, c, Affine::translate(c.pen.to_vec()));
+        return;
+    }
+    const TextPathRef& ref = c_.paths[std::size_t(path)];
+    const PathMeasure measure(ref.path, 0.01);
+    const double offset = ref.start_percent ? ref.start_offset * measure.length() : ref.start_offset;
+    for (const Cluster& c : cl) {
+        const double half = c.advance * c.stretch / 2;
+        double d = offset + c.pen.x + half;
+        if (ref.right_side) d = measure.length() - d;
+        const auto at = measure.at(d);
+        if (!at) continue;
+        const Vec2 t = ref.right_side ? -at->tangent : at->tangent;
+        const Affine m = Affine::translate(at->point.to_vec()) * Affine{t.x, t.y, -t.y, t.x, 0, 0} *
+                         Affine::translate({-half, c.pen.y});
+        place(glyphs, c, m);
+        pen_ = m * Point{2 * half, -c.pen.y};
+    }
+}
+
+// The glyphs and decorations of a cluster whose pen point `at` maps to user space.
+void Layouter::place(const std::vector<LaidGlyph>& glyphs, const Cluster& c, const Affine& at) {
+    const double deg = c_.chars[c.begin].rotate.value_or(0);
+    const Affine turn = Affine::rotate(deg * std::numbers::pi / 180);
+    const bool vert = vertical(c.begin);
+    const double base = baseline(c.span);
+    const double k = unit(c.span);
+    const FontMetrics m = primary_[c.span] ? primary_[c.span]->metrics() : FontMetrics{};
+    // The cluster's own frame: its origin on its baseline, along the line.
+    Affine frame = at * turn * Affine::translate({0, base});
+    if (vert && !c.upright) // turned: its baseline runs down the line's middle
+        frame = at * turn * Affine::rotate(std::numbers::pi / 2) *
+                Affine::translate({0, (m.ascender + m.descender) / 2 * k});
+    double x = 0;
+    for (std::size_t i = c.g0; i < c.g1; ++i) {
+        const LaidGlyph& g = glyphs[i];
+        Affine place = frame * Affine::translate({x, 0}) * Affine::scale(c.stretch, 1);
+        if (c.upright) // upright in vertical text: the glyph's top at the pen, centred on the line
+            place = at * turn * Affine::translate({-g.advance.x / 2, m.ascender * k});
+        out_.glyphs.push_back({g, place});
+        x += g.advance.x * c.stretch;
+    }
+    for (const std::uint32_t owner : c_.spans[c.span].decorations) {
+        const TextDecorationLines& d = c_.spans[owner].props.decoration;
+        const double ko = unit(owner);
+        const FontMetrics mo = primary_[owner] ? primary_[owner]->metrics() : FontMetrics{};
+        const double width = c.advance * c.stretch + c.extra;
+        if (d.underline)
+            out_.decorations.push_back({owner, 0, width, -mo.underline_position * ko,
+                                        mo.underline_thickness * ko, frame});
+        if (d.overline)
+            out_.decorations.push_back(
+                {owner, 1, width, -mo.ascender * ko, mo.underline_thickness * ko, frame});
+        if (d.line_through)
+            out_.decorations.push_back({owner, 2, width, -mo.strikeout_position * ko,
+                                        mo.strikeout_thickness * ko, frame});
+    }
+}
+
+} // namespace
+
+TextLayout layout_text(FontDatabase& fonts, const TextContent& content) {
+    return Layouter(fonts, content).run();
+}
+
+} // namespace casteljau::svg_detail

@@ -1,0 +1,192 @@
+// Loading a font with FreeType, and its glyph outlines as Paths.
+//
+// FreeType hands an outline as contours of on- and off-curve points;
+// FT_Outline_Decompose turns them into move, line, conic (quadratic: what
+// TrueType stores) and cubic (what CFF and CFF2 store) segments, which map
+// one to one onto Path's segments: no approximation happens here, the
+// flattener is the only place a curve is approximated. Glyphs are loaded
+// with FT_LOAD_NO_SCALE (font units, so no hinting and no rounding) and, for
+// variable fonts, at the design coordinates set by FT_Set_Var_Design_Coordinates.
+#include "casteljau/text/font.h"
+
+#include "casteljau/text/detail/font_impl.h"
+
+#include <hb-ot.h>
+
+#include FT_OUTLINE_H
+#include FT_MULTIPLE_MASTERS_H
+#include FT_TRUETYPE_TABLES_H
+#include FT_ADVANCES_H
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace casteljau {
+
+Font::Impl::~Impl() {
+    if (hb) hb_font_destroy(hb);
+    if (face) FT_Done_Face(face);
+    if (library) FT_Done_FreeType(library);
+}
+
+Font::~Font() = default;
+
+namespace {
+
+FT_ULong tag_of(const char t[4]) {
+    return FT_ULong(std::uint8_t(t[0])) << 24 | FT_ULong(std::uint8_t(t[1])) << 16 |
+           FT_ULong(std::uint8_t(t[2])) << 8 | FT_ULong(std::uint8_t(t[3]));
+}
+
+// Sets the design axes named in `variations`, each clamped to its range;
+// the others keep their defaults.
+void set_variations(FT_Face face, const std::vector<FontVariation>& variations) {
+    FT_MM_Var* mm = nullptr;
+    if (variations.empty() || !FT_HAS_MULTIPLE_MASTERS(face) || FT_Get_MM_Var(face, &mm) != 0)
+        return;
+    std::vector<FT_Fixed> coords(mm->num_axis);
+    for (FT_UInt i = 0; i < mm->num_axis; ++i) {
+        const FT_Var_Axis& axis = mm->axis[i];
+        coords[i] = axis.def;
+        for (const FontVariation& v : variations)
+            if (tag_of(v.tag) == axis.tag && std::isfinite(v.value))
+                coords[i] = std::clamp(FT_Fixed(std::lround(v.value * 65536.0)), axis.minimum,
+                                       axis.maximum);
+    }
+    FT_Set_Var_Design_Coordinates(face, mm->num_axis, coords.data());
+    FT_Done_MM_Var(face->glyph->library, mm);
+}
+
+FontMetrics metrics_of(FT_Face face) {
+    FontMetrics m;
+    m.units_per_em = face->units_per_EM > 0 ? face->units_per_EM : 1000;
+    m.ascender = face->ascender;
+    m.descender = face->descender;
+    m.underline_position = face->underline_position;
+    m.underline_thickness = face->underline_thickness;
+    // Fonts without an OS/2 table keep proportions of the em, as browsers guess.
+    m.x_height = m.units_per_em / 2;
+    m.cap_height = m.units_per_em * 0.7;
+    m.strikeout_thickness = m.underline_thickness;
+    m.strikeout_position = m.x_height / 2;
+    if (const auto* os2 = static_cast<const TT_OS2*>(FT_Get_Sfnt_Table(face, FT_SFNT_OS2));
+        os2 && os2->version != 0xFFFF) {
+        if (os2->sxHeight > 0) m.x_height = os2->sxHeight;
+        if (os2->sCapHeight > 0) m.cap_height = os2->sCapHeight;
+        if (os2->yStrikeoutSize > 0) m.strikeout_thickness = os2->yStrikeoutSize;
+        if (os2->yStrikeoutPosition > 0)
+            m.strikeout_position = os2->yStrikeoutPosition + m.strikeout_thickness / 2;
+    }
+    if (m.underline_thickness <= 0) m.underline_thickness = m.units_per_em / 14;
+    if (m.strikeout_thickness <= 0) m.strikeout_thickness = m.underline_thickness;
+    if (m.ascender <= 0 && m.descender >= 0) m.ascender = m.units_per_em * 0.8, m.descender = -m.units_per_em * 0.2;
+    return m;
+}
+
+Point pt(const FT_Vector* v) { return {double(v->x), double(v->y)}; }
+
+struct Decomposer {
+    static int move(const FT_Vector* to, void* user) {
+        static_cast<Path*>(user)->move_to(pt(to));
+        return 0;
+    }
+    static int line(const FT_Vector* to, void* user) {
+        static_cast<Path*>(user)->line_to(pt(to));
+        return 0;
+    }
+    static int conic(const FT_Vector* c, const FT_Vector* to, void* user) {
+        static_cast<Path*>(user)->quad_to(pt(c), pt(to));
+        return 0;
+    }
+    static int cubic(const FT_Vector* c1, const FT_Vector* c2, const FT_Vector* to, void* user) {
+        static_cast<Path*>(user)->cubic_to(pt(c1), pt(c2), pt(to));
+        return 0;
+    }
+};
+
+// The contours of an outline, each closed: a glyph is a filled area.
+Path path_of(FT_Outline& outline) {
+    static const FT_Outline_Funcs funcs = {Decomposer::move, Decomposer::line, Decomposer::conic,
+                                           Decomposer::cubic, 0, 0};
+    Path contours;
+    if (FT_Outline_Decompose(&outline, &funcs, &contours) != 0) return {};
+    Path closed;
+    for (Subpath sp : contours.subpaths()) {
+        sp.closed = true;
+        closed.add_subpath(sp);
+    }
+    return closed;
+}
+
+} // namespace
+
+std::shared_ptr<Font> Font::load(const std::string& file, int index,
+                                 const std::vector<FontVariation>& variations, std::string* error) {
+    const auto failed = [&](const char* what) -> std::shared_ptr<Font> {
+        if (error) *error = file + ": " + what;
+        return nullptr;
+    };
+    std::shared_ptr<Font> font(new Font);
+    font->impl_ = std::make_unique<Impl>();
+    Impl& impl = *font->impl_;
+    if (FT_Init_FreeType(&impl.library) != 0) return failed("FreeType does not start");
+    if (FT_New_Face(impl.library, file.c_str(), index, &impl.face) != 0)
+        return failed("not a font FreeType reads");
+    if (!FT_IS_SCALABLE(impl.face)) return failed("a bitmap font, without outlines");
+    set_variations(impl.face, variations);
+    hb_blob_t* blob = hb_blob_create_from_file(file.c_str());
+    hb_face_t* hb_face = hb_face_create(blob, unsigned(index));
+    impl.hb = hb_font_create(hb_face);
+    hb_face_destroy(hb_face);
+    hb_blob_destroy(blob);
+    hb_ot_font_set_funcs(impl.hb);
+    // Shaping in font units: HarfBuzz's positions are then exact, unhinted.
+    hb_font_set_scale(impl.hb, int(impl.face->units_per_EM), int(impl.face->units_per_EM));
+    std::vector<hb_variation_t> hb_variations;
+    for (const FontVariation& v : variations)
+        if (std::isfinite(v.value))
+            hb_variations.push_back({hb_tag_t(tag_of(v.tag)), float(v.value)});
+    hb_font_set_variations(impl.hb, hb_variations.data(), unsigned(hb_variations.size()));
+    font->metrics_ = metrics_of(impl.face);
+    font->family_ = impl.face->family_name ? impl.face->family_name : "";
+    font->glyph_count_ = std::size_t(std::max<FT_Long>(impl.face->num_glyphs, 0));
+    return font;
+}
+
+std::uint32_t Font::glyph_index(char32_t c) const {
+    std::lock_guard lock(mutex_);
+    return FT_Get_Char_Index(impl_->face, FT_ULong(c));
+}
+
+const Path& Font::outline(std::uint32_t glyph) const {
+    std::lock_guard lock(mutex_);
+    if (const auto it = outlines_.find(glyph); it != outlines_.end()) return it->second;
+    Path& path = outlines_[glyph];
+    FT_Face face = impl_->face;
+    if (glyph < glyph_count_ &&
+        FT_Load_Glyph(face, glyph, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP) ==
+            0 &&
+        face->glyph->format == FT_GLYPH_FORMAT_OUTLINE &&
+        face->glyph->outline.n_points <= kMaxOutlinePoints)
+        path = path_of(face->glyph->outline);
+    return path;
+}
+
+double Font::advance(std::uint32_t glyph) const {
+    std::lock_guard lock(mutex_);
+    FT_Fixed a = 0;
+    if (FT_Get_Advance(impl_->face, glyph, FT_LOAD_NO_SCALE, &a) != 0) return 0;
+    return double(a);
+}
+
+double Font::vertical_advance(std::uint32_t glyph) const {
+    std::lock_guard lock(mutex_);
+    FT_Fixed a = 0;
+    if (!FT_HAS_VERTICAL(impl_->face) ||
+        FT_Get_Advance(impl_->face, glyph, FT_LOAD_NO_SCALE | FT_LOAD_VERTICAL_LAYOUT, &a) != 0)
+        return metrics_.units_per_em;
+    return double(a);
+}
+
+} // namespace casteljau

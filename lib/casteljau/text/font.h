@@ -1,0 +1,87 @@
+// A loaded font: its metrics and its glyphs' outlines, read with FreeType.
+//
+// Outlines are in font units with y up, as the font stores them: TrueType
+// glyphs are quadratic Beziers, CFF and CFF2 glyphs cubic ones, kept as such
+// in a Path so that text goes through the same flattener and rasterizer, to
+// the same error bound, as every other curve. They are never hinted (SVG's
+// text-rendering: geometricPrecision is what every value gets). Each glyph
+// is read once per font and variation and kept: a page of text does not
+// re-read the font.
+//
+// Variable fonts: `variations` sets design axes by tag (wght, wdth, slnt,
+// ital, opsz or the font's own), clamped to each axis's range; axes the
+// font does not have are ignored.
+#pragma once
+
+#include "casteljau/curve/path.h"
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace casteljau {
+
+struct FontFace;
+
+/// A design axis setting: a four-letter tag and a value.
+struct FontVariation {
+    char tag[4] = {' ', ' ', ' ', ' '};
+    double value = 0;
+    bool operator==(const FontVariation&) const = default;
+};
+
+/// Vertical metrics in font units, y up (descender negative).
+struct FontMetrics {
+    double units_per_em = 1000;
+    double ascender = 800, descender = -200;
+    double x_height = 500, cap_height = 700;
+    double underline_position = -100, underline_thickness = 50; ///< position: the line's centre
+    double strikeout_position = 250, strikeout_thickness = 50;  ///< position: the line's centre
+};
+
+class Font {
+  public:
+    /// Loads face `index` of `file`; null, with `error` set, when it does not
+    /// parse as a font or is over the limits below.
+    static std::shared_ptr<Font> load(const std::string& file, int index,
+                                      const std::vector<FontVariation>& variations,
+                                      std::string* error = nullptr);
+    ~Font();
+    Font(const Font&) = delete;
+    Font& operator=(const Font&) = delete;
+
+    const FontMetrics& metrics() const { return metrics_; }
+    const std::string& family() const { return family_; }
+    /// The glyph for a character; 0 (the missing glyph) when there is none.
+    std::uint32_t glyph_index(char32_t c) const;
+    /// The glyph's outline in font units, y up; empty for a glyph without
+    /// one (a space) or that does not read. Thread-safe; kept once read.
+    const Path& outline(std::uint32_t glyph) const;
+    /// The glyph's horizontal advance in font units.
+    double advance(std::uint32_t glyph) const;
+    /// The glyph's vertical advance in font units (the em when the font has
+    /// no vertical metrics).
+    double vertical_advance(std::uint32_t glyph) const;
+    std::size_t glyph_count() const { return glyph_count_; }
+
+    /// An outline with more points than this is not read (empty): a hostile
+    /// font cannot make one glyph cost unbounded time.
+    static constexpr int kMaxOutlinePoints = 1 << 16;
+
+    struct Impl; ///< FreeType and HarfBuzz handles (text/detail/font_impl.h)
+    Impl& impl() const { return *impl_; }
+
+  private:
+    Font() = default;
+    std::unique_ptr<Impl> impl_;
+    FontMetrics metrics_;
+    std::string family_;
+    std::size_t glyph_count_ = 0;
+    mutable std::mutex mutex_; // FreeType faces are not thread-safe
+    mutable std::unordered_map<std::uint32_t, Path> outlines_;
+};
+
+} // namespace casteljau

@@ -1,0 +1,192 @@
+// Font matching with fontconfig (see font_database.h).
+//
+// For each family of a query in turn, fontconfig's best match for that
+// family, weight, slant and width is taken when it really is that family (a
+// font of another family means fontconfig fell back: the next family is
+// tried, as CSS Fonts 4, 5.1 asks) or when the family is generic, which
+// fontconfig resolves through the system's aliases. A character's fallback
+// is the first font of fontconfig's sorted list for the query whose charset
+// has the character. Results are cached per query: matching is the costly
+// part of fontconfig, and a document asks the same few queries again and again.
+#include "casteljau/text/font_database.h"
+
+#include <fontconfig/fontconfig.h>
+
+#include <cctype>
+#include <map>
+#include <tuple>
+
+namespace casteljau {
+
+struct FontDatabase::Impl {
+    FcConfig* config = nullptr;
+    using Key = std::tuple<std::vector<std::string>, int, int, int, char32_t>;
+    std::map<Key, std::optional<FontFace>> matches;
+    std::map<std::pair<std::pair<std::string, int>, std::vector<std::tuple<std::string, double>>>,
+             std::shared_ptr<const Font>>
+        fonts;
+    ~Impl() {
+        if (config) FcConfigDestroy(config);
+    }
+};
+
+namespace {
+
+bool generic(const std::string& family) {
+    for (const char* g : {"serif", "sans-serif", "monospace", "cursive", "fantasy", "system-ui",
+                          "ui-serif", "ui-sans-serif", "ui-monospace", "math", "emoji"})
+        if (family == g) return true;
+    return false;
+}
+
+bool same_name(std::string_view a, std::string_view b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(a[i])) !=
+            std::tolower(static_cast<unsigned char>(b[i])))
+            return false;
+    return true;
+}
+
+bool has_family(FcPattern* p, const std::string& family) {
+    FcChar8* name = nullptr;
+    for (int i = 0; FcPatternGetString(p, FC_FAMILY, i, &name) == FcResultMatch; ++i)
+        if (same_name(reinterpret_cast<const char*>(name), family)) return true;
+    return false;
+}
+
+bool has_char(FcPattern* p, char32_t c) {
+    FcCharSet* cs = nullptr;
+    return FcPatternGetCharSet(p, FC_CHARSET, 0, &cs) == FcResultMatch && FcCharSetHasChar(cs, c);
+}
+
+std::optional<FontFace> face_of(FcPattern* p) {
+    FcChar8* file = nullptr;
+    int index = 0;
+    if (FcPatternGetString(p, FC_FILE, 0, &file) != FcResultMatch) return std::nullopt;
+    FcPatternGetInteger(p, FC_INDEX, 0, &index);
+    return FontFace{reinterpret_cast<const char*>(file), index};
+}
+
+// The pattern of one family of a query, with fontconfig's substitutions.
+FcPattern* pattern_of(FcConfig* config, const std::string& family, const FontQuery& q) {
+    FcPattern* p = FcPatternCreate();
+    // system-ui has no fontconfig alias on most systems: its closest is sans-serif.
+    const std::string name = family == "system-ui" || family == "ui-sans-serif" ? "sans-serif"
+                             : family == "ui-serif"                             ? "serif"
+                             : family == "ui-monospace"                         ? "monospace"
+                                                                                : family;
+    FcPatternAddString(p, FC_FAMILY, reinterpret_cast<const FcChar8*>(name.c_str()));
+    FcPatternAddDouble(p, FC_WEIGHT, FcWeightFromOpenTypeDouble(q.weight));
+    FcPatternAddInteger(p, FC_SLANT,
+                        q.style == FontStyle::Italic    ? FC_SLANT_ITALIC
+                        : q.style == FontStyle::Oblique ? FC_SLANT_OBLIQUE
+                                                        : FC_SLANT_ROMAN);
+    FcPatternAddInteger(p, FC_WIDTH, q.stretch); // fontconfig's widths are CSS's percentages
+    FcPatternAddBool(p, FC_OUTLINE, FcTrue);
+    FcConfigSubstitute(config, p, FcMatchPattern);
+    FcDefaultSubstitute(p);
+    return p;
+}
+
+// The best font of `family` for the query, when it is that family (or the
+// family is generic) and has `c`, when given.
+std::optional<FontFace> match_family(FcConfig* config, const std::string& family,
+                                     const FontQuery& q, std::optional<char32_t> c) {
+    FcPattern* p = pattern_of(config, family, q);
+    std::optional<FontFace> face;
+    FcResult result;
+    if (FcPattern* m = FcFontMatch(config, p, &result)) {
+        if ((generic(family) || has_family(m, family)) && (!c || has_char(m, *c)))
+            face = face_of(m);
+        FcPatternDestroy(m);
+    }
+    FcPatternDestroy(p);
+    return face;
+}
+
+// The first font, in fontconfig's order of closeness to the query, that
+// has `c`; without `c`, the closest font of all.
+std::optional<FontFace> closest(FcConfig* config, const std::string& family, const FontQuery& q,
+                                std::optional<char32_t> c) {
+    FcPattern* p = pattern_of(config, family, q);
+    std::optional<FontFace> face;
+    FcResult result;
+    if (FcFontSet* set = FcFontSort(config, p, FcFalse, nullptr, &result)) {
+        for (int i = 0; i < set->nfont && !face; ++i)
+            if (!c || has_char(set->fonts[i], *c)) face = face_of(set->fonts[i]);
+        FcFontSetDestroy(set);
+    }
+    FcPatternDestroy(p);
+    return face;
+}
+
+} // namespace
+
+FontDatabase::FontDatabase() : FontDatabase(true) {}
+
+FontDatabase::FontDatabase(bool system_config) : impl_(std::make_unique<Impl>()) {
+    FcInit();
+    impl_->config = system_config ? FcInitLoadConfigAndFonts() : FcConfigCreate();
+}
+
+std::unique_ptr<FontDatabase> FontDatabase::empty() {
+    return std::unique_ptr<FontDatabase>(new FontDatabase(false));
+}
+
+FontDatabase::~FontDatabase() = default;
+
+FontDatabase& FontDatabase::system() {
+    static FontDatabase db;
+    return db;
+}
+
+bool FontDatabase::add_font_dir(const std::string& dir) {
+    std::lock_guard lock(mutex_);
+    impl_->matches.clear();
+    return FcConfigAppFontAddDir(impl_->config, reinterpret_cast<const FcChar8*>(dir.c_str()));
+}
+
+bool FontDatabase::add_font_file(const std::string& file) {
+    std::lock_guard lock(mutex_);
+    impl_->matches.clear();
+    return FcConfigAppFontAddFile(impl_->config, reinterpret_cast<const FcChar8*>(file.c_str()));
+}
+
+void FontDatabase::set_default_family(std::string family) {
+    std::lock_guard lock(mutex_);
+    impl_->matches.clear();
+    default_family_ = std::move(family);
+}
+
+std::optional<FontFace> FontDatabase::match(const FontQuery& q) { return find(q, std::nullopt); }
+
+std::optional<FontFace> FontDatabase::fallback(const FontQuery& q, char32_t c) {
+    return find(q, c);
+}
+
+std::optional<FontFace> FontDatabase::find(const FontQuery& q, std::optional<char32_t> c) {
+    std::lock_guard lock(mutex_);
+    const Impl::Key key{q.families, q.weight, int(q.style), q.stretch, c ? *c + 1 : 0};
+    if (const auto it = impl_->matches.find(key); it != impl_->matches.end()) return it->second;
+    std::optional<FontFace> face;
+    for (const std::string& family : q.families)
+        if ((face = match_family(impl_->config, family, q, c))) break;
+    if (!face) face = match_family(impl_->config, default_family_, q, c);
+    if (!face)
+        face = closest(impl_->config, q.families.empty() ? default_family_ : q.families[0], q, c);
+    impl_->matches.emplace(key, face);
+    return face;
+}
+
+std::shared_ptr<const Font> FontDatabase::font(const FontFace& face,
+                                               const std::vector<FontVariation>& variations) {
+    std::lock_guard lock(mutex_);
+    std::vector<std::tuple<std::string, double>> axes;
+    for (const FontVariation& v : variations) axes.emplace_back(std::string(v.tag, 4), v.value);
+    auto& slot = impl_->fonts[{{face.file, face.index}, axes}];
+    if (!slot) slot = Font::load(face.file, face.index, variations);
+    return slot;
+}
+
+} // namespace casteljau

@@ -1,0 +1,90 @@
+// Font matching: which font file draws a family, weight, style and stretch,
+// and which one draws a character the first choice lacks.
+//
+// fontconfig does the matching (its rules are the system's: aliases, the
+// generic families serif, sans-serif, monospace, cursive, fantasy and
+// system-ui, and per-character fallback through each font's charset). The
+// system configuration honours FONTCONFIG_FILE, so a test or a user can
+// point the database at a chosen set of fonts; an application can instead
+// start from an empty database and add its own files and folders.
+//
+// Families are tried in the order given; the first that fontconfig finds
+// under that very name (or as a generic family) wins, as in CSS Fonts 4,
+// 5.1 "font family matching". When none does, the default family is used.
+//
+// A FontDatabase is safe to share between threads: its calls take a lock.
+#pragma once
+
+#include "casteljau/text/font.h"
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace casteljau {
+
+enum class FontStyle { Normal, Italic, Oblique };
+
+/// What a piece of text asks of its font (CSS Fonts 4, 2).
+struct FontQuery {
+    std::vector<std::string> families; ///< in order of preference; generic names allowed
+    int weight = 400;                  ///< 1 to 1000
+    FontStyle style = FontStyle::Normal;
+    int stretch = 100; ///< percent of normal width, 50 to 200
+};
+
+/// A font file and the face in it: what a Font is loaded from.
+struct FontFace {
+    std::string file;
+    int index = 0;
+    bool operator==(const FontFace&) const = default;
+};
+
+/// Finds fonts and keeps them loaded.
+class FontDatabase {
+  public:
+    /// The system's fonts, as fontconfig's configuration has them
+    /// (FONTCONFIG_FILE honoured).
+    FontDatabase();
+    /// No fonts at all: an application adds its own.
+    static std::unique_ptr<FontDatabase> empty();
+    ~FontDatabase();
+    FontDatabase(const FontDatabase&) = delete;
+    FontDatabase& operator=(const FontDatabase&) = delete;
+
+    /// Adds every font under `dir`; false when it is not a readable folder.
+    bool add_font_dir(const std::string& dir);
+    /// Adds one font file; false when fontconfig cannot read it.
+    bool add_font_file(const std::string& file);
+    /// The family used when none of a query's families is found
+    /// ("serif" unless set, as in browsers).
+    void set_default_family(std::string family);
+    const std::string& default_family() const { return default_family_; }
+
+    /// The best face for a query; nullopt only when the database has no font.
+    std::optional<FontFace> match(const FontQuery& q);
+    /// The best face for a query that has a glyph for `c`; nullopt when no
+    /// font has one.
+    std::optional<FontFace> fallback(const FontQuery& q, char32_t c);
+    /// The loaded font of a face and variation, shared and kept for the
+    /// database's life; null when the file does not parse as a font.
+    std::shared_ptr<const Font> font(const FontFace& face,
+                                     const std::vector<FontVariation>& variations = {});
+
+    /// The database shared by the SVG reader and the CLI when they are given
+    /// none: the system's fonts, plus what add_font_dir gave it.
+    static FontDatabase& system();
+
+  private:
+    explicit FontDatabase(bool system_config);
+    std::optional<FontFace> find(const FontQuery& q, std::optional<char32_t> c);
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+    std::string default_family_ = "serif";
+    std::mutex mutex_;
+};
+
+} // namespace casteljau

@@ -1,0 +1,12 @@
+// UTF-8 to code points, at the border: a malformed sequence becomes U+FFFD
+// (the replacement character), one per maximal bad subpart (Unicode 15, 3.9).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace casteljau {
+
+std::u32string decode_utf8(std::string_view text);
+
+} // namespace casteljau
