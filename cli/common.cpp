@@ -51,6 +51,20 @@ void add_svg_options(CLI::App* cmd, SvgOptions& o) {
                     "A folder <image> files may also come from, besides the SVG's own folder and "
                     "below (never the network)")
         ->check(CLI::ExistingDirectory);
+    // Fonts go to the database the reader uses when given none; it is made
+    // (fontconfig's scan of the system's fonts) only when text needs it.
+    cmd->add_option_function<std::vector<std::string>>(
+           "--font-dir",
+           [](const std::vector<std::string>& dirs) {
+               for (const std::string& d : dirs) FontDatabase::system().add_font_dir(d);
+           },
+           "A folder of fonts for text, besides the system's (fontconfig's; FONTCONFIG_FILE "
+           "chooses another configuration); may be repeated")
+        ->check(CLI::ExistingDirectory);
+    cmd->add_option_function<std::string>(
+        "--font-family-default",
+        [](const std::string& family) { FontDatabase::system().set_default_family(family); },
+        "The family for text whose font-family names no font found (default: serif)");
     // Path data is drawn up to its first error by default now: the flag of
     // that name stays, accepted and doing nothing, for the scripts that pass it.
     cmd->add_flag("--partial-path-data")->group("");

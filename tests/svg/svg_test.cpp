@@ -129,12 +129,13 @@ TEST(Reader, BadPathDataIsDrawnUpToTheErrorOrWithStrictAnError) {
 }
 
 TEST(Reader, UnsupportedElementsAreSkippedWithOneWarningEach) {
-    // text is SVG, not drawn yet: a warning; a filter is drawn only where an
-    // element refers to it; blink is not
-    // SVG: not rendered, as unknown elements are not (no warning). An image
-    // without an href draws nothing, as the spec says, with no warning.
-    const SvgResult r = parse("<text>hi</text><filter/><image/><defs><linearGradient/></defs>"
-                              "<title>t</title><blink/><rect width='1' height='1'/>");
+    // foreignObject is SVG, not drawn: a warning; a filter is drawn only
+    // where an element refers to it; blink is not SVG: not rendered, as
+    // unknown elements are not (no warning). An image without an href draws
+    // nothing, as the spec says, with no warning.
+    const SvgResult r =
+        parse("<foreignObject/><filter/><image/><defs><linearGradient/></defs>"
+              "<title>t</title><blink/><rect width='1' height='1'/>");
     ASSERT_TRUE(r.scene) << r.error;
     EXPECT_EQ(r.scene->root.children.size(), 1u);
     EXPECT_EQ(r.warnings.size(), 1u);

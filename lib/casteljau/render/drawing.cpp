@@ -76,6 +76,11 @@ Drawing::ShapeId Drawing::fill(const Path& path, const Paint& paint, const Affin
     return add(std::move(s));
 }
 
+Drawing::ShapeId Drawing::text(FontDatabase& fonts, std::string_view utf8, const TextStyle& style,
+                               Point origin, const Paint& paint, const Affine& transform) {
+    return fill(text_to_path(fonts, utf8, style, origin), paint, transform, FillRule::NonZero);
+}
+
 Drawing::ShapeId Drawing::stroke(const Path& path, const Paint& paint,
                                  const StrokeGeometry& geometry, const Affine& transform) {
     Shape s{path,

@@ -24,6 +24,7 @@
 #include "casteljau/render/bands.h"
 #include "casteljau/render/renderer.h"
 #include "casteljau/scene/scene.h"
+#include "casteljau/text/layout.h"
 
 #include <cstddef>
 #include <memory>
@@ -89,6 +90,11 @@ class Drawing {
     /// Adds a stroked path; the stroke's width is in path coordinates.
     ShapeId stroke(const Path& path, const Paint& paint, const StrokeGeometry& geometry,
                    const Affine& transform = Affine::identity());
+    /// Adds a line of text filled with `paint`, its baseline starting at
+    /// `origin` (text/layout.h's text_to_path: shaped, bidi, font fallback),
+    /// its glyph outlines flattened and antialiased as every path is.
+    ShapeId text(FontDatabase& fonts, std::string_view utf8, const TextStyle& style, Point origin,
+                 const Paint& paint, const Affine& transform = Affine::identity());
     /// Adds any shape (fill and stroke together, element opacity).
     ShapeId add(Shape shape);
     /// Adds `image` stretched onto `where` (mapped to pixels by `transform`).

@@ -37,7 +37,9 @@ std::optional<double> Reader::length(const pugi::xml_node& n, const char* attr, 
 Scene Reader::read() {
     pugi::xml_document doc;
     const pugi::xml_parse_result res =
-        doc.load_buffer(text_.data(), text_.size(), pugi::parse_default | pugi::parse_doctype);
+        // parse_ws_pcdata: the spaces between a text's tspans are its text.
+        doc.load_buffer(text_.data(), text_.size(),
+                        pugi::parse_default | pugi::parse_doctype | pugi::parse_ws_pcdata);
     if (!res) fail_at(res.offset, std::string("malformed XML: ") + res.description());
     // pugixml never expands entities nor fetches a DTD; a document that
     // declares entities is refused rather than read without them
@@ -195,10 +197,15 @@ void Reader::apply_declarations(const pugi::xml_node& n, const StyleState& paren
         for (const pugi::xml_attribute& a : n.attributes()) check_length_limit(n, a);
     ElementProps unused;
     const auto apply = [&](std::string_view name, std::string_view value, const char* from) {
-        if ((name == "font-size" || name == "font") == (props != nullptr)) return;
+        // The font shorthand goes in both: its size in the first, the
+        // properties it resets in the second, in their cascade order.
+        const bool shorthand = name == "font";
+        if (!shorthand && (name == "font-size") == (props != nullptr)) return;
+        const double size = style.font_size;
         const std::string e =
             apply_property(name, value, parent, style, props ? *props : unused, ctx);
-        if (!e.empty()) problem(n, from + e + "; ignored");
+        if (shorthand && props) style.font_size = size;
+        if (!e.empty() && (props || !shorthand)) problem(n, from + e + "; ignored");
     };
     cascade(n, props != nullptr, std::ref(apply)); // by reference: no copy of the closure
 }

@@ -84,11 +84,13 @@ double scale_of(const TextStyle& s, const Font& f) {
 }
 
 // One item's glyphs, shaped and converted to pixels.
+// Each glyph names the style of its cluster's first character: an item may
+// hold several styles that shape alike (the spans of one font and size).
 void shape_item(std::u32string_view text, std::size_t begin, std::size_t end, bool rtl,
                 const std::shared_ptr<const Font>& font, const TextStyle& style,
-                std::uint32_t style_index, std::vector<LaidGlyph>& out) {
+                const std::vector<std::uint32_t>& style_of, std::vector<LaidGlyph>& out) {
     if (!font) { // no font at all: the characters take no room
-        out.push_back({nullptr, 0, begin, end, true, style_index, 0, {}, {}, rtl});
+        out.push_back({nullptr, 0, begin, end, true, style_of[begin], 0, {}, {}, rtl});
         return;
     }
     ShapeOptions options{rtl ? TextDirection::Rtl : TextDirection::Ltr, style.language,
@@ -105,7 +107,7 @@ void shape_item(std::u32string_view text, std::size_t begin, std::size_t end, bo
         const auto next = std::upper_bound(starts.begin(), starts.end(), g.cluster);
         const std::size_t cluster_end = next == starts.end() ? end : *next;
         const bool first = i == 0 || glyphs[i - 1].cluster != g.cluster;
-        out.push_back({font, g.glyph, g.cluster, cluster_end, first, style_index, k,
+        out.push_back({font, g.glyph, g.cluster, cluster_end, first, style_of[g.cluster], k,
                        Vec2{g.x_advance * k, -g.y_advance * k}, Vec2{g.x_offset * k, -g.y_offset * k},
                        rtl});
     }
@@ -136,7 +138,7 @@ std::vector<LaidGlyph> shape_paragraph(FontDatabase& fonts, std::u32string_view 
         }
         if (run.rtl()) std::reverse(items.begin(), items.end());
         for (const auto& [b, e] : items)
-            shape_item(text, b, e, run.rtl(), font[b], styles[style_of[b]], style_of[b], out);
+            shape_item(text, b, e, run.rtl(), font[b], styles[style_of[b]], style_of, out);
     }
     return out;
 }

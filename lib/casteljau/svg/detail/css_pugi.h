@@ -5,6 +5,7 @@
 
 #include "casteljau/svg/css.h"
 
+#include <cctype>
 #include <pugixml.hpp>
 
 namespace casteljau::svg_detail {
@@ -31,13 +32,13 @@ class PugiCssTree final : public CssTree {
         return element(n);
     }
     // Comments and processing instructions do not count (Selectors 4, 14.2);
-    // whitespace-only text is not kept by pugixml's default parse, so it
-    // does not either, as Selectors 4 now says.
+    // whitespace-only text does not either, as Selectors 4 now says.
     bool empty(Node e) const override {
         for (const pugi::xml_node& c : xml(e).children()) {
             if (c.type() == pugi::node_element) return false;
-            if ((c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) && *c.value())
-                return false;
+            if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata)
+                for (const char* p = c.value(); *p; ++p)
+                    if (!std::isspace(static_cast<unsigned char>(*p))) return false;
         }
         return true;
     }
