@@ -16,7 +16,7 @@ packages=(
   python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest
   python3-dask python3-distributed python3-pil
   libfontconfig-dev libfreetype-dev libharfbuzz-dev libfribidi-dev
-  fonts-dejavu-core fonts-noto-core fonts-noto-mono
+  fonts-dejavu-core fonts-noto-core fonts-noto-mono fonts-noto-cjk
 )
 
 missing=()

@@ -129,7 +129,8 @@ class Layouter {
     const TextContent& c_;
     std::vector<TextStyle> styles_;
     std::vector<std::shared_ptr<const Font>> primary_;
-    Point pen_; // where the next chunk starts when it gives no x or y
+    Point pen_;      // where the next chunk starts when it gives no x or y
+    Point path_pen_; // the same along a textPath: x a distance, y an offset
     TextLayout out_;
 };
 
@@ -182,9 +183,12 @@ void Layouter::chunk(std::size_t b, std::size_t e) {
     for (LaidGlyph& g : glyphs) g.begin += b, g.end += b;
     std::vector<Cluster> cl = clusters_of(glyphs, vert);
     apply_text_lengths(cl);
+    // On a path, x is a distance along it (SVG 1.1, 10.13.3), from 0 where
+    // the path's text starts.
     const int path = span_of(b).text_path;
-    const Point start{path >= 0 ? 0 : c_.chars[b].x.value_or(pen_.x),
-                      path >= 0 ? 0 : c_.chars[b].y.value_or(pen_.y)};
+    const bool path_starts = path >= 0 && (b == 0 || span_of(b - 1).text_path != path);
+    const Point from = path < 0 ? pen_ : path_starts ? Point{0, 0} : path_pen_;
+    const Point start{c_.chars[b].x.value_or(from.x), path >= 0 ? from.y : c_.chars[b].y.value_or(from.y)};
     Point pen = start;
     for (Cluster& c : cl) {
         for (std::size_t i = c.begin; i < c.end; ++i) pen = pen + Vec2{c_.chars[i].dx, c_.chars[i].dy};
@@ -201,7 +205,7 @@ void Layouter::chunk(std::size_t b, std::size_t e) {
                                                                  : 0;
     const Vec2 move = vert ? Vec2{0, shift} : Vec2{shift, 0};
     for (Cluster& c : cl) c.pen = c.pen + move;
-    pen_ = pen + move;
+    (path < 0 ? pen_ : path_pen_) = pen + move;
     if (path < 0) {
         for (const Cluster& c : cl) place(glyphs, c, Affine::translate(c.pen.to_vec()));
         return;
