@@ -21,6 +21,7 @@
 //      upright, others turn 90 degrees (glyph-orientation-vertical: auto).
 #include "casteljau/curve/path_measure.h"
 #include "casteljau/svg/detail/text_content.h"
+#include "casteljau/text/bidi.h"
 
 #include <cmath>
 #include <numbers>
@@ -120,6 +121,8 @@ class Layouter {
         return up * unit(span) - s.baseline_shift;
     }
 
+    std::vector<std::uint8_t> bidi_of(std::size_t b, std::size_t e, std::u32string_view text,
+                                      TextDirection dir) const;
     std::vector<Cluster> clusters_of(const std::vector<LaidGlyph>& glyphs, bool vert) const;
     void apply_text_lengths(std::vector<Cluster>& cl) const;
     void chunk(std::size_t b, std::size_t e);
@@ -133,6 +136,28 @@ class Layouter {
     Point path_pen_; // the same along a textPath: x a distance, y an offset
     TextLayout out_;
 };
+
+// unicode-bidi: bidi-override (and isolate-override) on a span sets its
+// characters' level to its own direction's, one above the paragraph's
+// when that differs (UAX #9, X4 and X5); empty when no span overrides.
+std::vector<std::uint8_t> Layouter::bidi_of(std::size_t b, std::size_t e, std::u32string_view text,
+                                            TextDirection dir) const {
+    const auto overrides = [&](std::size_t i) {
+        const UnicodeBidi u = span_of(i).props.unicode_bidi;
+        return u == UnicodeBidi::BidiOverride || u == UnicodeBidi::IsolateOverride;
+    };
+    bool any = false;
+    for (std::size_t i = b; i < e && !any; ++i) any = overrides(i);
+    if (!any || dir == TextDirection::Ttb) return {};
+    const bool base_rtl = dir == TextDirection::Rtl;
+    std::vector<std::uint8_t> levels = bidi_levels(text, base_rtl);
+    for (std::size_t i = b; i < e; ++i)
+        if (overrides(i)) {
+            const bool rtl = span_of(i).style.text.rtl;
+            levels[i - b] = std::uint8_t(rtl == base_rtl ? (base_rtl ? 1 : 0) : (base_rtl ? 2 : 1));
+        }
+    return levels;
+}
 
 std::vector<Cluster> Layouter::clusters_of(const std::vector<LaidGlyph>& glyphs, bool vert) const {
     std::vector<Cluster> cl;
@@ -179,7 +204,9 @@ void Layouter::chunk(std::size_t b, std::size_t e) {
     const TextDirection dir = vert                             ? TextDirection::Ttb
                               : span_of(b).style.text.rtl      ? TextDirection::Rtl
                                                                : TextDirection::Ltr;
-    std::vector<LaidGlyph> glyphs = shape_paragraph(fonts_, text, styles_, style_of, dir);
+    const std::vector<std::uint8_t> levels = bidi_of(b, e, text, dir);
+    std::vector<LaidGlyph> glyphs =
+        shape_paragraph(fonts_, text, styles_, style_of, dir, levels.empty() ? nullptr : &levels);
     for (LaidGlyph& g : glyphs) g.begin += b, g.end += b;
     std::vector<Cluster> cl = clusters_of(glyphs, vert);
     apply_text_lengths(cl);

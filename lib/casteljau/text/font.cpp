@@ -151,7 +151,16 @@ std::shared_ptr<Font> Font::load(const std::string& file, int index,
     font->metrics_ = metrics_of(impl.face);
     font->family_ = impl.face->family_name ? impl.face->family_name : "";
     font->glyph_count_ = std::size_t(std::max<FT_Long>(impl.face->num_glyphs, 0));
+    FT_MM_Var* mm = nullptr;
+    if (FT_HAS_MULTIPLE_MASTERS(impl.face) && FT_Get_MM_Var(impl.face, &mm) == 0) {
+        for (FT_UInt i = 0; i < mm->num_axis; ++i) font->axes_.push_back(mm->axis[i].tag);
+        FT_Done_MM_Var(impl.library, mm);
+    }
     return font;
+}
+
+bool Font::has_axis(const char tag[4]) const {
+    return std::find(axes_.begin(), axes_.end(), tag_of(tag)) != axes_.end();
 }
 
 std::uint32_t Font::glyph_index(char32_t c) const {

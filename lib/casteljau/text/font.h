@@ -66,6 +66,8 @@ class Font {
     /// no vertical metrics).
     double vertical_advance(std::uint32_t glyph) const;
     std::size_t glyph_count() const { return glyph_count_; }
+    /// Whether the font is variable along the design axis `tag` ("wght").
+    bool has_axis(const char tag[4]) const;
 
     /// An outline with more points than this is not read (empty): a hostile
     /// font cannot make one glyph cost unbounded time.
@@ -80,6 +82,7 @@ class Font {
     FontMetrics metrics_;
     std::string family_;
     std::size_t glyph_count_ = 0;
+    std::vector<std::uint32_t> axes_; // design axis tags, big-endian packed
     mutable std::mutex mutex_; // FreeType faces are not thread-safe
     mutable std::unordered_map<std::uint32_t, Path> outlines_;
 };

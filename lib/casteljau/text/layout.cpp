@@ -28,6 +28,25 @@ bool is_invisible(char32_t c) {
            (c >= 0x2060 && c <= 0x206F) || (c >= 0xFE00 && c <= 0xFE0F) || c == 0xFEFF;
 }
 
+// A face loaded for a style: on a variable font, font-weight and
+// font-stretch set the wght and wdth axes unless font-variation-settings
+// does (CSS Fonts 4, 7.2: the settings apply last).
+std::shared_ptr<const Font> load(FontDatabase& db, const FontFace& face, const TextStyle& s) {
+    std::shared_ptr<const Font> f = db.font(face, s.variations);
+    if (!f) return f;
+    std::vector<FontVariation> v = s.variations;
+    const auto set = [&](const char tag[4], double value) {
+        for (const FontVariation& x : v)
+            if (std::equal(tag, tag + 4, x.tag)) return false;
+        if (!f->has_axis(tag)) return false;
+        v.insert(v.begin(), FontVariation{{tag[0], tag[1], tag[2], tag[3]}, value});
+        return true;
+    };
+    const bool weight = set("wght", s.font.weight);
+    const bool width = set("wdth", s.font.stretch);
+    return weight || width ? db.font(face, v) : f;
+}
+
 // The font of each character (CSS Fonts 4, 5.2): the style's first match
 // when it has the character, else the font fontconfig falls back to for it;
 // a mark or an invisible character takes its base's font when that has it.
@@ -37,7 +56,7 @@ std::vector<std::shared_ptr<const Font>> fonts_of(FontDatabase& db, std::u32stri
     std::vector<std::shared_ptr<const Font>> primary(styles.size());
     for (std::size_t s = 0; s < styles.size(); ++s)
         if (const auto face = db.match(styles[s].font))
-            primary[s] = db.font(*face, styles[s].variations);
+            primary[s] = load(db, *face, styles[s]);
     std::map<std::pair<std::uint32_t, char32_t>, std::shared_ptr<const Font>> fallbacks;
     std::vector<std::shared_ptr<const Font>> fonts(text.size());
     for (std::size_t i = 0; i < text.size(); ++i) {
@@ -58,7 +77,7 @@ std::vector<std::shared_ptr<const Font>> fonts_of(FontDatabase& db, std::u32stri
         auto& f = fallbacks[{s, c}];
         if (!f)
             if (const auto face = db.fallback(styles[s].font, c))
-                f = db.font(*face, styles[s].variations);
+                f = load(db, *face, styles[s]);
         fonts[i] = has(f) ? f : primary[s]; // none has it: the style's missing glyph
     }
     return fonts;
@@ -118,13 +137,17 @@ void shape_item(std::u32string_view text, std::size_t begin, std::size_t end, bo
 std::vector<LaidGlyph> shape_paragraph(FontDatabase& fonts, std::u32string_view text,
                                        const std::vector<TextStyle>& styles,
                                        const std::vector<std::uint32_t>& style_of,
-                                       TextDirection direction) {
+                                       TextDirection direction,
+                                       const std::vector<std::uint8_t>* given) {
     std::vector<LaidGlyph> out;
-    if (text.empty() || styles.empty() || style_of.size() != text.size()) return out;
+    if (text.empty() || styles.empty() || style_of.size() != text.size() ||
+        (given && given->size() != text.size()))
+        return out;
     const std::vector<std::shared_ptr<const Font>> font = fonts_of(fonts, text, styles, style_of);
-    const std::vector<std::uint8_t> levels = direction == TextDirection::Ttb
-                                                 ? std::vector<std::uint8_t>(text.size(), 0)
-                                                 : bidi_levels(text, direction == TextDirection::Rtl);
+    const std::vector<std::uint8_t> levels =
+        given                                ? *given
+        : direction == TextDirection::Ttb    ? std::vector<std::uint8_t>(text.size(), 0)
+                                             : bidi_levels(text, direction == TextDirection::Rtl);
     for (const BidiRun& run : visual_runs(levels)) {
         // Items: maximal ranges of one font and one way of shaping.
         std::vector<std::pair<std::size_t, std::size_t>> items;

@@ -55,11 +55,15 @@ struct LaidGlyph {
 };
 
 /// Shapes `text`, character i set in styles[style_of[i]], glyphs in visual
-/// order (left to right; top to bottom for Ttb).
+/// order (left to right; top to bottom for Ttb). `levels`, when given, are
+/// the characters' bidi embedding levels (a caller that overrides the bidi
+/// algorithm, as unicode-bidi: bidi-override does, computes them);
+/// otherwise the algorithm's for the direction's base level.
 std::vector<LaidGlyph> shape_paragraph(FontDatabase& fonts, std::u32string_view text,
                                        const std::vector<TextStyle>& styles,
                                        const std::vector<std::uint32_t>& style_of,
-                                       TextDirection direction);
+                                       TextDirection direction,
+                                       const std::vector<std::uint8_t>* levels = nullptr);
 
 /// Appends the outline of `g` to `out`, mapped by `m` from the glyph's own
 /// pixel space: its origin on the baseline at (0, 0), y down.
