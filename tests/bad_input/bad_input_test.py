@@ -28,6 +28,7 @@ Usage: bad_input_test.py PATH/TO/casteljau THIS_FOLDER plain|sanitized
 """
 import base64
 import os
+import random
 import re
 import resource
 import signal
@@ -44,14 +45,18 @@ BIN, DATA, MODE = os.path.abspath(sys.argv[1]), os.path.realpath(sys.argv[2]), s
 SLOW = 10.0 if MODE == "sanitized" else 1.0
 GIB = 1 << 30
 HANG_S = 120  # a hang guard, far beyond every bound below
+# Text is set with the fonts the tests draw with (tests/text/fonts.conf),
+# whatever the machine has: the same fonts, the same fallbacks, the same cost.
+ENV = dict(os.environ, FONTCONFIG_FILE=os.path.join(DATA, "..", "text", "fonts.conf"))
+DEJAVU_SANS = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
 failures = []
 
 
-def run(args, cwd, preexec=None):
+def run(args, cwd, preexec=None, env=None):
     """Runs casteljau ARGS; returns (status, stderr, CPU seconds, max RSS bytes)."""
     with tempfile.TemporaryFile() as err:
         p = subprocess.Popen([BIN] + args, cwd=cwd, stdout=subprocess.DEVNULL, stderr=err,
-                             preexec_fn=preexec)
+                             preexec_fn=preexec, env=env or ENV)
         killer = threading.Timer(HANG_S, p.kill)
         killer.start()
         _, status, usage = os.wait4(p.pid, 0)
@@ -81,8 +86,8 @@ def precious(path):
 
 
 def intact(path):
-    with open(path) as f:
-        return f.read() == "precious\n"
+    with open(path, "rb") as f:  # an image written over it is not text
+        return f.read() == b"precious\n"
 
 
 def leftovers(folder):
@@ -121,6 +126,7 @@ BAD = {
     "mask_content_bomb.svg": r"3: <rect>: more than 1000000 elements, <use> instances included",
     "clip_path_content_bomb.svg": r"3: <rect>: more than 1000000 elements, <use> instances included",
     "pattern_content_bomb.svg": r"3: <rect>: more than 1000000 elements, <use> instances included",
+    "text_tspans_nested_300.svg": r"258: <tspan>: text nested too deep or too long \(the element limits\)",
 }
 
 # Cases over the 2 s and 1 GiB every other refusal keeps: file -> (CPU
@@ -163,6 +169,11 @@ RECOVERED = {
     # The feImage draws the rectangle again, whose filter is the one being
     # read: that copy is not drawn.
     "filter_image_of_itself.svg": r"3: <rect>: <filter> #f refers back to itself; the element is not drawn",
+    "text_rotate_nan.svg": r"2: <text>: attribute rotate: not a list of numbers; ignored",
+    "text_path_no_href.svg": r"3: <textPath>: href names no path or shape; its text is not drawn",
+    "text_path_href_self.svg": r"3: <textPath>: href names no path or shape; its text is not drawn",
+    "text_path_href_text.svg": r"3: <textPath>: href names no path or shape; its text is not drawn",
+    "text_tref_missing.svg": r"3: <tref>: href '#nope' names no element; skipped",
 }
 
 def png_header_only(w, h):
@@ -215,6 +226,10 @@ def generate_bad(folder):
     with open(os.path.join(folder, "path_attribute_50MB.svg"), "w") as f:
         f.write('<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10">\n<path d="M0 0')
         f.write(" " * (50 * 2**20 - 4) + '"/>\n</svg>\n')
+    # Text: tspans nested 300 deep, one a line (the 256th is refused, on line 258).
+    with open(os.path.join(folder, "text_tspans_nested_300.svg"), "w") as f:
+        f.write('<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10">\n<text y="8">\n')
+        f.write("<tspan>a\n" * 300 + "</tspan>" * 300 + "</text>\n</svg>\n")
 
 
 def bad_input(work):
@@ -346,6 +361,88 @@ def generate_valid(folder):
             v = r.split()
             for k in range(0, 12, 3):
                 f.write(" ".join(v[k:k + 3]) + "\n")
+    generate_text(folder, svg)
+
+
+def broken_font(src, dst, family, tables, seed):
+    """A copy of the font `src` renamed `family` (the same length as
+    "DejaVu Sans", so that the name table's offsets hold) whose `tables` are
+    random bytes: fontconfig indexes it by its intact name and cmap, and
+    FreeType and HarfBuzz get the rest."""
+    with open(src, "rb") as f:
+        d = bytearray(f.read())
+    for enc in ("latin-1", "utf-16-be"):
+        d = d.replace("DejaVu Sans".encode(enc), family.encode(enc))
+    rng = random.Random(seed)
+    for i in range(struct.unpack(">H", d[4:6])[0]):
+        tag, _, offset, length = struct.unpack(">4sIII", d[12 + 16 * i:28 + 16 * i])
+        if tag in tables:
+            d[offset:offset + length] = rng.randbytes(length)
+    with open(dst, "wb") as f:
+        f.write(d)
+
+
+def generate_text(folder, svg):
+    # Fonts that do not parse, for --font-dir: random bytes named .ttf, the
+    # first 10 KB of DejaVu Sans (its table directory, no table whole), and
+    # DejaVu Sans with random outlines and layout tables (Broken Sans) or
+    # random advances and layout tables (Wobbly Sans), which fontconfig does
+    # index.
+    fonts = os.path.join(folder, "text_fonts")
+    os.makedirs(fonts, exist_ok=True)
+    with open(os.path.join(fonts, "garbage.ttf"), "wb") as f:
+        f.write(random.Random(3).randbytes(4096))
+    if os.path.exists(DEJAVU_SANS):
+        with open(DEJAVU_SANS, "rb") as f, open(os.path.join(fonts, "DejaVuSans-10KB.ttf"), "wb") as g:
+            g.write(f.read(10240))
+        broken_font(DEJAVU_SANS, os.path.join(fonts, "BrokenSans.ttf"), "Broken Sans",
+                    (b"glyf", b"hmtx", b"GSUB", b"GPOS", b"GDEF", b"kern"), 1)
+        broken_font(DEJAVU_SANS, os.path.join(fonts, "WobblySans.ttf"), "Wobbly Sans",
+                    (b"hmtx", b"hhea", b"GSUB", b"GPOS", b"GDEF", b"kern"), 2)
+    # The same fonts as the only ones there are: no system font to fall back on.
+    with open(os.path.join(folder, "no_fonts.conf"), "w") as f:
+        f.write('<?xml version="1.0"?>\n<fontconfig><cachedir prefix="xdg">fontconfig</cachedir></fontconfig>\n')
+    svg("text_only_broken_fonts.svg", 300, 100,
+        '<text x="10" y="30" font-size="20" font-family="Broken Sans">Broken: fi AV &#x0301;e&#x4E00;</text>\n'
+        '<text x="10" y="60" font-size="20" font-family="Wobbly Sans" text-decoration="underline" '
+        'textLength="200">Wobbly: fi AV &#x05D0;1</text>\n'
+        '<text x="10" y="90" font-size="20" font-family="garbage, serif" writing-mode="vertical-rl">none</text>\n')
+    # A million characters in one element: the first 1e5 (max_text_characters)
+    # are drawn, with a warning, which --strict leaves a warning.
+    svg("text_chars_1e6.svg", 400, 100, '<text x="0" y="50" font-size="10">%s</text>\n'
+        % ("lorem ipsum dolor sit amet " * 37038))
+    # 1e5 tspans of one character each: 1e5 spans and shapes.
+    svg("text_tspans_1e5.svg", 400, 100, '<text x="0" y="50" font-size="10">%s</text>\n'
+        % "".join("<tspan>%s</tspan>" % "abcdefghij"[i % 10] for i in range(100000)))
+    # x, y, dx, dy and rotate lists of 1e5 values on 30 characters, some huge.
+    n = 100000
+    svg("text_lists_1e5.svg", 400, 100,
+        '<text x="%s" y="50" dx="%s" dy="%s" rotate="%s" font-size="10">%s<tspan dx="%s">%s</tspan></text>\n'
+        % (" ".join("%d" % (i % 400) for i in range(n)), " ".join(["0.5"] * n),
+           " ".join(["-1e300", "1e300"] * (n // 2)), " ".join(["1e308", "-7.5"] * (n // 2)), "xyz" * 10,
+           " ".join(["-1e308"] * n), "abc"))
+    # 1e5 characters, each with its own x: 1e5 chunks, each shaped alone.
+    svg("text_chunks_1e5.svg", 400, 100, '<text y="50" font-size="10" x="%s">%s</text>\n'
+        % (" ".join("%d" % (i % 400) for i in range(n)), "abcdefghij" * (n // 10)))
+    # 1e4 chunks of 1e4 tspans: each chunk is shaped with the styles of
+    # every span of the element (1e8 font look-ups when each is looked up).
+    svg("text_chunks_1e4_of_1e4_tspans.svg", 400, 100, '<text y="50" font-size="10" x="%s">%s</text>\n'
+        % (" ".join("%d" % (i % 400) for i in range(10000)), "<tspan>a</tspan>" * 10000))
+    # 50 chunks on a textPath of 1e5 segments: the path measured once, not
+    # once a chunk.
+    svg("text_path_1e5_segments_50_chunks.svg", 400, 100,
+        '<path id="p" d="M0 50 %s"/>\n<text font-size="10"><textPath href="#p"><tspan x="%s">%s</tspan>'
+        '</textPath></text>\n' % (" ".join(["q2 -5 4 0 q2 5 4 0"] * 50000),
+                                   " ".join(str(8 * i) for i in range(50)), "a" * 50))
+    # 2e4 different characters that no font has (plane 15, private use):
+    # a fallback search for each.
+    svg("text_fallback_2e4_chars.svg", 400, 100, '<text y="50" font-size="10">%s</text>\n'
+        % "".join(chr(c) for c in range(0xF0000, 0xF0000 + 20000)))
+    # Tspans nested 200 deep, each underlined, overlined and struck
+    # through, around 5000 characters: 200 x 3 decorations for each.
+    svg("text_decorations_nested_200.svg", 400, 100, '<text y="50" font-size="10">%s%s%s</text>\n'
+        % ('<tspan text-decoration="underline overline line-through">' * 200, "abcdefghij" * 500,
+           "</tspan>" * 200))
 
 
 # file -> (extra arguments, time bound in seconds)
@@ -366,7 +463,30 @@ VALID = {
     "filter_values_1e9.svg": ([], 6.0),
     "filter_kernel_32x32.svg": ([], 3.0),
     "filter_primitives_400.svg": ([], 3.0),
+    # Text (the files named text_* in this folder, and generate_text's).
+    "text_fonts_broken.svg": (["--font-dir", "text_fonts"], 2.0),
+    "text_only_broken_fonts.svg": (["--font-dir", "text_fonts"], 2.0),
+    "text_path_degenerate.svg": ([], 2.0),
+    "text_path_bad_hrefs.svg": ([], 2.0),
+    "text_tref_cycles.svg": ([], 2.0),
+    "text_values_extreme.svg": ([], 2.0),
+    "text_invalid_utf8.svg": ([], 2.0),
+    "text_invalid_char_refs.svg": ([], 2.0),
+    "text_unicode_edges.svg": ([], 2.0),
+    "text_bidi_nested_200.svg": ([], 2.0),
+    "text_chars_1e6.svg": ([], 2.0),
+    "text_tspans_1e5.svg": ([], 2.0),
+    "text_lists_1e5.svg": ([], 2.0),
+    "text_chunks_1e5.svg": ([], 2.0),
+    "text_chunks_1e4_of_1e4_tspans.svg": ([], 2.0),
+    "text_path_1e5_segments_50_chunks.svg": ([], 2.0),
+    "text_fallback_2e4_chars.svg": ([], 2.0),
+    "text_decorations_nested_200.svg": ([], 2.0),
 }
+
+# Cases run with another fontconfig configuration than tests/text/fonts.conf
+# (a file generate_valid writes): file -> configuration.
+VALID_FONTCONFIG = {"text_only_broken_fonts.svg": "no_fonts.conf"}
 
 
 # Only their time is at stake here, which the sanitizers inflate tenfold;
@@ -381,9 +501,11 @@ def valid_input(work):
     for name, (extra, bound) in sorted(VALID.items()):
         if MODE == "sanitized" and name in PLAIN_ONLY:
             continue
+        src = os.path.join(DATA, name) if os.path.exists(os.path.join(DATA, name)) else name
         out = os.path.join(work, name + ".png")
-        command = ["patch" if name.endswith(".bpt") else "render", name, "-o", out] + extra
-        status, err, seconds, rss = run(command, work)
+        command = ["patch" if name.endswith(".bpt") else "render", src, "-o", out] + extra
+        env = dict(ENV, FONTCONFIG_FILE=os.path.join(work, VALID_FONTCONFIG[name])) if name in VALID_FONTCONFIG else None
+        status, err, seconds, rss = run(command, work, env=env)
         check(name + " renders", status == 0 and os.path.getsize(out) > 0, "status %d: %s" % (status, err[-300:]))
         check_bounds(name, seconds, rss, bound)
 

@@ -1,10 +1,14 @@
 // Glyph outlines (text/font.h) against FreeType, which reads the same files:
-// the outlines keep the font's own segments and contours exactly, they
-// flatten within the tolerance like every other curve, and drawn through
-// Casteljau's rasterizer they cover the pixels FreeType's exact-area gray
-// rasterizer covers. The fonts are the Debian packages the tests pin
-// (fonts-dejavu-core for TrueType quadratics, fonts-noto-cjk for CFF
-// cubics), never whatever the machine happens to have.
+// the outlines are the font's own segments and contours, exactly; they
+// flatten within the tolerance like every other curve; and drawn through
+// Casteljau's rasterizer they cover what FreeType's gray rasterizer covers.
+// That rasterizer computes exact areas too, but of a polyline it makes
+// coarsely (1/16 px for a quadratic, ~1/6 px for a cubic), which at text
+// sizes is off the true coverage by 1 to 5/255 on average: the reference is
+// FreeType at ~1100 px, box-filtered down, where that error is negligible.
+// The fonts are the Debian packages the tests pin (fonts-dejavu-core for
+// TrueType quadratics, fonts-noto-cjk for CFF cubics), never whatever the
+// machine happens to have.
 #include "casteljau/flatten/path_flatten.h"
 #include "casteljau/raster/path_edges.h"
 #include "casteljau/raster/rasterizer.h"
@@ -229,8 +233,7 @@ void compare_with_freetype(const std::string& file, int index, const char* sampl
         }
         std::printf("  %2d px: tol 0.01 %.2f / %.1f; tol 0.25 %.2f / %.1f (area %.2f of the "
                     "bound); FreeType 1x %.2f; tol 0.25 vs FreeType 1x %.2f\n",
-                    px, fine_mean, fine_max, coarse_mean, coarse_max, ratio, ft_mean,
-                    coarse_vs_ft);
+                    px, fine_mean, fine_max, coarse_mean, coarse_max, ratio, ft_mean, coarse_vs_ft);
     }
 }
 
@@ -241,6 +244,44 @@ TEST(GlyphRaster, TrueTypeGlyphsCoverWhatFreeTypeCovers) {
 TEST(GlyphRaster, CffGlyphsCoverWhatFreeTypeCovers) {
     if (!has_file(kNotoSansCjk)) GTEST_SKIP() << kNotoSansCjk << " (fonts-noto-cjk) missing";
     compare_with_freetype(kNotoSansCjk, 0, kCjkSample);
+}
+
+// At display sizes a misplaced control point shows pixel by pixel. At
+// 600 px against FreeType at 2400 px box-filtered (whose flattening error,
+// 1/16 px for a quadratic and about 1/6 px for a cubic at that size, is then
+// a quarter of that), every pixel is within a few levels; a curve off by
+// 0.1 px is off by some 25 levels on the pixels it crosses.
+void compare_large(const std::string& file, int index, const char* sample) {
+    const auto font = Font::load(file, index, {});
+    ASSERT_TRUE(font);
+    FtFace ft(file, index);
+    ASSERT_TRUE(ft.get());
+    const int px = 600, k = 4;
+    double worst = 0, worst_mean = 0;
+    for (const std::uint32_t g : glyphs_of(*font, sample)) {
+        Coverage ref = frame_of(font->outline(g), double(px) / font->metrics().units_per_em);
+        double outside = 0;
+        const double scale = add_freetype(ft.get(), g, px * k, k, ref, outside) / k;
+        ASSERT_GT(scale, 0);
+        const Coverage ours = casteljau_render(font->outline(g), scale, ref, 0.01);
+        const double max = max_difference(ours, ref) * 255;
+        EXPECT_LE(max, 20) << font->family() << " glyph " << g << " at " << px << " px: max |diff| "
+                           << max << "/255";
+        worst = std::max(worst, max);
+        worst_mean = std::max(worst_mean, mean_levels(ours, ref));
+    }
+    std::printf("  %s %d px vs FreeType at %d px box-filtered: worst mean |diff| %.3f/255, "
+                "max %.1f/255\n",
+                font->family().c_str(), px, px * k, worst_mean, worst);
+}
+
+TEST(GlyphRaster, LargeTrueTypeGlyphsMatchFreeTypePixelForPixel) {
+    compare_large(kDejaVuSans, 0, kLatinSample);
+}
+
+TEST(GlyphRaster, LargeCffGlyphsMatchFreeTypePixelForPixel) {
+    if (!has_file(kNotoSansCjk)) GTEST_SKIP() << kNotoSansCjk << " (fonts-noto-cjk) missing";
+    compare_large(kNotoSansCjk, 0, kCjkSample);
 }
 
 // The comparison can fail: the outline a quarter pixel off, or flattened
@@ -303,6 +344,104 @@ TEST(GlyphFlattening, MeasuredErrorWithinTheToleranceTrueType) {
 TEST(GlyphFlattening, MeasuredErrorWithinTheToleranceCff) {
     if (!has_file(kNotoSansCjk)) GTEST_SKIP() << kNotoSansCjk << " (fonts-noto-cjk) missing";
     check_flattening_error(kNotoSansCjk, 0, 300);
+}
+
+// The glyph's outline as the font defines it, in font units: FreeType's own
+// decomposition of the unscaled contours, at twice the scale and halved.
+// TrueType places an on-curve point midway between two consecutive
+// off-curve points; FT_Outline_Decompose computes it in integers, (a + b) / 2
+// truncated, so at unit scale it is up to half a unit off, while with
+// coordinates doubled (the `shift` of FT_Outline_Funcs) it is exact.
+Path exact_outline(FT_Face face, std::uint32_t glyph) {
+    Path contours;
+    if (FT_Load_Glyph(face, glyph, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING) != 0) return contours;
+    struct Emit {
+        static Point pt(const FT_Vector* v) { return {v->x / 2.0, v->y / 2.0}; }
+        static int move(const FT_Vector* to, void* p) {
+            static_cast<Path*>(p)->move_to(pt(to));
+            return 0;
+        }
+        static int line(const FT_Vector* to, void* p) {
+            static_cast<Path*>(p)->line_to(pt(to));
+            return 0;
+        }
+        static int conic(const FT_Vector* c, const FT_Vector* to, void* p) {
+            static_cast<Path*>(p)->quad_to(pt(c), pt(to));
+            return 0;
+        }
+        static int cubic(const FT_Vector* c1, const FT_Vector* c2, const FT_Vector* to, void* p) {
+            static_cast<Path*>(p)->cubic_to(pt(c1), pt(c2), pt(to));
+            return 0;
+        }
+    };
+    const FT_Outline_Funcs funcs = {Emit::move, Emit::line, Emit::conic, Emit::cubic, 1, 0};
+    FT_Outline_Decompose(&face->glyph->outline, &funcs, &contours);
+    Path closed;
+    for (Subpath sp : contours.subpaths()) {
+        sp.closed = true;
+        closed.add_subpath(sp);
+    }
+    return closed;
+}
+
+// The control points of a segment, in order.
+std::vector<Point> control_points(const Segment& s) {
+    return std::visit(
+        [](const auto& c) -> std::vector<Point> {
+            if constexpr (requires { c.points(); })
+                return {c.points().begin(), c.points().end()};
+            else
+                return {c.p0, c.p1, c.p2};
+        },
+        s);
+}
+
+// The largest distance between corresponding control points of two paths
+// of the same structure; infinity when the structure differs.
+double control_point_distance(const Path& a, const Path& b) {
+    if (a.subpaths().size() != b.subpaths().size()) return INFINITY;
+    double d = 0;
+    for (std::size_t i = 0; i < a.subpaths().size(); ++i) {
+        const Subpath &p = a.subpaths()[i], &q = b.subpaths()[i];
+        if (p.segments.size() != q.segments.size() || p.closed != q.closed) return INFINITY;
+        d = std::max(d, distance(p.start, q.start));
+        for (std::size_t k = 0; k < p.segments.size(); ++k) {
+            const std::vector<Point> u = control_points(p.segments[k]),
+                                     v = control_points(q.segments[k]);
+            if (u.size() != v.size() || p.segments[k].index() != q.segments[k].index())
+                return INFINITY;
+            for (std::size_t j = 0; j < u.size(); ++j) d = std::max(d, distance(u[j], v[j]));
+        }
+    }
+    return d;
+}
+
+// Font::outline is the font's outline exactly: same contours, same
+// segments, same control points, the implied on-curve points of TrueType
+// included (nothing is approximated before the flattener).
+TEST(GlyphOutline, TrueTypeImpliedOnCurvePointsAreExactMidpoints) {
+    const auto font = Font::load(kDejaVuSans, 0, {});
+    ASSERT_TRUE(font);
+    FtFace ft(kDejaVuSans, 0);
+    ASSERT_TRUE(ft.get());
+    double worst = 0;
+    std::uint32_t worst_glyph = 0;
+    int off = 0;
+    for (std::uint32_t g = 0; g < 400; ++g) {
+        const double d = control_point_distance(font->outline(g), exact_outline(ft.get(), g));
+        off += d > 0;
+        if (d > worst) worst = d, worst_glyph = g;
+    }
+    EXPECT_EQ(worst, 0) << off << " of 400 glyphs are off their font's outline, by up to " << worst
+                        << " font units (glyph " << worst_glyph << ")";
+    // The reference does have the half units that integer midpoints lose.
+    bool half_units = false;
+    const Path o = exact_outline(ft.get(), font->glyph_index(U'o'));
+    for (const Subpath& sp : o.subpaths())
+        for (const Segment& s : sp.segments)
+            for (const Point p : control_points(s))
+                half_units |= p.x != std::floor(p.x) || p.y != std::floor(p.y);
+    EXPECT_TRUE(half_units);
 }
 
 // What kinds of segment a glyph's outline holds.
@@ -405,18 +544,34 @@ TEST(GlyphOutline, SpaceAndOutOfRangeGlyphsAreEmpty) {
     EXPECT_EQ(font->glyph_index(U'\U0010FFFD'), 0u);
 }
 
-TEST(FontLoad, MetricsOfDejaVuSans) {
+// The x-height and cap height are the tops of x and H: what font-size-adjust
+// scales by. Noto Sans has them in its OS/2 table (version 4).
+TEST(FontLoad, MetricsFromTheOs2Table) {
+    const auto font = Font::load("/usr/share/fonts/truetype/noto/NotoSans-Regular.ttf", 0, {});
+    ASSERT_TRUE(font);
+    EXPECT_EQ(font->family(), "Noto Sans");
+    const FontMetrics& m = font->metrics();
+    EXPECT_EQ(m.units_per_em, 1000);
+    EXPECT_GT(m.ascender, 0);
+    EXPECT_LT(m.descender, 0);
+    EXPECT_EQ(m.x_height, font->outline(font->glyph_index(U'x')).bounds().y1);
+    EXPECT_EQ(m.cap_height, font->outline(font->glyph_index(U'H')).bounds().y1);
+    EXPECT_GT(m.underline_thickness, 0);
+    EXPECT_LT(m.underline_position, 0);
+    EXPECT_GT(m.strikeout_position, 0);
+}
+
+// DejaVu Sans's OS/2 table is version 1, without sxHeight and sCapHeight;
+// browsers then measure the glyphs x and H (Firefox's gfxFont, Skia's
+// FreeType scaler) rather than guess half and 0.7 of the em: DejaVu's
+// x-height is 0.547 em, which font-size-adjust would otherwise get 9% wrong.
+TEST(FontLoad, XHeightAndCapHeightMeasuredWhenTheOs2TableLacksThem) {
     const auto font = Font::load(kDejaVuSans, 0, {});
     ASSERT_TRUE(font);
     EXPECT_EQ(font->family(), "DejaVu Sans");
-    const FontMetrics& m = font->metrics();
-    EXPECT_EQ(m.units_per_em, 2048);
-    EXPECT_GT(m.ascender, 0);
-    EXPECT_LT(m.descender, 0);
-    // The cap height is the top of a flat capital.
-    EXPECT_EQ(font->outline(font->glyph_index(U'H')).bounds().y1, m.cap_height);
-    EXPECT_GT(m.x_height, 0);
-    EXPECT_LT(m.x_height, m.cap_height);
+    EXPECT_EQ(font->metrics().units_per_em, 2048);
+    EXPECT_EQ(font->metrics().x_height, font->outline(font->glyph_index(U'x')).bounds().y1);
+    EXPECT_EQ(font->metrics().cap_height, font->outline(font->glyph_index(U'H')).bounds().y1);
     EXPECT_GT(font->glyph_count(), 5000u);
 }
 

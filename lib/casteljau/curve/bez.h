@@ -120,16 +120,34 @@ struct Bez {
         for (Point q : p) r = r.united(q);
         return r;
     }
-    /// Tight box: the end points plus the curve at every root of x'(t) and y'(t).
+    /// Tight box: the end points plus the curve at every root of x'(t) and
+    /// y'(t) in (0, 1). When the inner control points lie in the end points'
+    /// box, so does the curve (convex hull): that box, with no root to find,
+    /// which is the common case of glyph outlines and most drawn curves. The
+    /// hodograph of a quadratic or a cubic is linear or quadratic: its roots
+    /// in closed form; higher degrees by subdivision (bernstein_roots).
     Rect bounds() const {
         Rect r = Rect::from_points(p[0], p[N]);
+        bool inside = true;
+        for (int i = 1; i < N; ++i) inside = inside && r.contains(p[i]);
+        if (inside) return r;
         const auto h = hodograph();
-        std::array<double, N> cx{}, cy{};
-        for (int i = 0; i < N; ++i) cx[i] = h[i].x, cy[i] = h[i].y;
-        std::array<double, N> roots{};
-        for (const auto* c : {&cx, &cy}) {
-            const int k = bernstein_roots(*c, roots);
-            for (int i = 0; i < k; ++i) r = r.united(eval(roots[i]));
+        for (int axis = 0; axis < 2; ++axis) {
+            std::array<double, N> c{};
+            for (int i = 0; i < N; ++i) c[i] = axis == 0 ? h[i].x : h[i].y;
+            std::array<double, N> roots{};
+            int k = 0;
+            if constexpr (N == 2) { // c0 (1 - t) + c1 t
+                if ((c[0] < 0 && c[1] > 0) || (c[0] > 0 && c[1] < 0)) roots[k++] = c[0] / (c[0] - c[1]);
+            } else if constexpr (N == 3) { // Bernstein (c0, c1, c2) in the power basis
+                double q[2];
+                const int n = solve_quadratic(c[0] - 2 * c[1] + c[2], 2 * (c[1] - c[0]), c[0], q);
+                for (int i = 0; i < n; ++i) roots[k++] = q[i];
+            } else {
+                k = bernstein_roots(c, roots);
+            }
+            for (int i = 0; i < k; ++i)
+                if (roots[i] > 0 && roots[i] < 1) r = r.united(eval(roots[i]));
         }
         return r;
     }

@@ -400,11 +400,23 @@ Shape Reader::painted(const pugi::xml_node& n, Path path, const StyleState& styl
         return s;
     }
     const Path& of = box ? *box : s.path;
+    // A gradient in objectBoundingBox units is resolved against `box` here,
+    // as the renderer would against the shape's own path.
+    const auto boxed = [&](std::shared_ptr<const Gradient> g) {
+        if (!box || !g || !g->object_bounding_box) return g;
+        const Rect b = box->bounds();
+        auto moved = std::make_shared<Gradient>(*g);
+        moved->transform =
+            Affine::translate(b.min().to_vec()) * Affine::scale(b.width(), b.height()) * g->transform;
+        moved->object_bounding_box = false;
+        return std::shared_ptr<const Gradient>(std::move(moved));
+    };
     if (const auto p = paint(n, style.fill, style, of))
-        s.fill = Fill{p->color, p->gradient, style.fill_opacity, style.fill_rule, p->pattern};
+        s.fill =
+            Fill{p->color, boxed(p->gradient), style.fill_opacity, style.fill_rule, p->pattern};
     if (const auto p = paint(n, style.stroke, style, of); p && style.stroke_geometry.width > 0)
-        s.stroke =
-            Stroke{p->color, p->gradient, style.stroke_opacity, style.stroke_geometry, p->pattern};
+        s.stroke = Stroke{p->color, boxed(p->gradient), style.stroke_opacity,
+                          style.stroke_geometry, p->pattern};
     if (props.non_scaling_stroke && s.stroke) to_host_space(s);
     return s;
 }

@@ -58,13 +58,29 @@ std::optional<double> value_at(const std::vector<PositionLists>& stack, std::siz
     return std::nullopt;
 }
 
-// The rotate value of a character: the nearest list's value for its index,
-// else the last value of the nearest list (SVG 2, 11.10.1.2).
+// The rotate value of a character: that of the nearest element with a
+// rotate list, its value for the index or, past its end, its last value
+// (SVG 1.1, 10.5; SVG 2, 11.8.3).
 std::optional<double> rotate_at(const std::vector<PositionLists>& stack, std::size_t index) {
-    if (const auto r = value_at(stack, index, &PositionLists::rotate)) return r;
     for (auto it = stack.rbegin(); it != stack.rend(); ++it)
-        if (!it->rotate.empty()) return it->rotate.back();
+        if (!it->rotate.empty())
+            return index - it->start < it->rotate.size() ? it->rotate[index - it->start]
+                                                         : it->rotate.back();
     return std::nullopt;
+}
+
+// All the character data under `n`, in document order (tref, SVG 1.1,
+// 10.6); pugixml's walk is iterative, so any depth is safe.
+std::string text_content(const pugi::xml_node& n) {
+    struct Walker : pugi::xml_tree_walker {
+        std::string out;
+        bool for_each(pugi::xml_node& c) override {
+            if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata) out += c.value();
+            return true;
+        }
+    } walker;
+    pugi::xml_node(n).traverse(walker);
+    return std::move(walker.out);
 }
 
 bool is_collapsible(char32_t c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
@@ -128,6 +144,7 @@ bool Reader::text_span(const pugi::xml_node& e, TextReading& r, std::uint32_t pa
     if (props.text.decoration.any())
         span.decorations.push_back(std::uint32_t(r.content.spans.size()));
     span.text_path = p.text_path;
+    span.parent = parent;
     r.content.spans.push_back(std::move(span));
     return true;
 }
@@ -183,7 +200,7 @@ void Reader::text_children(const pugi::xml_node& e, TextReading& r, int depth) {
                 continue;
             }
             if (!text_span(c, r, self)) continue;
-            text_characters(c, target.text().get(), std::uint32_t(r.content.spans.size() - 1), r);
+            text_characters(c, text_content(target), std::uint32_t(r.content.spans.size() - 1), r);
         }
     }
 }

@@ -23,6 +23,7 @@
 #include "casteljau/svg/detail/text_content.h"
 #include "casteljau/text/bidi.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -137,25 +138,55 @@ class Layouter {
     TextLayout out_;
 };
 
-// unicode-bidi: bidi-override (and isolate-override) on a span sets its
-// characters' level to its own direction's, one above the paragraph's
-// when that differs (UAX #9, X4 and X5); empty when no span overrides.
+// unicode-bidi (CSS Writing Modes 3, 2.2): each span that embeds,
+// isolates or overrides wraps its content, its descendants' included, in
+// the bidi control characters that do the same (LRE/RLE, LRI/RLI, LRO/RLO,
+// FSI, closed by PDF or PDI), and the algorithm runs on that text; empty
+// when no span asks for any.
 std::vector<std::uint8_t> Layouter::bidi_of(std::size_t b, std::size_t e, std::u32string_view text,
                                             TextDirection dir) const {
-    const auto overrides = [&](std::size_t i) {
-        const UnicodeBidi u = span_of(i).props.unicode_bidi;
-        return u == UnicodeBidi::BidiOverride || u == UnicodeBidi::IsolateOverride;
-    };
-    bool any = false;
-    for (std::size_t i = b; i < e && !any; ++i) any = overrides(i);
-    if (!any || dir == TextDirection::Ttb) return {};
-    const bool base_rtl = dir == TextDirection::Rtl;
-    std::vector<std::uint8_t> levels = bidi_levels(text, base_rtl);
-    for (std::size_t i = b; i < e; ++i)
-        if (overrides(i)) {
-            const bool rtl = span_of(i).style.text.rtl;
-            levels[i - b] = std::uint8_t(rtl == base_rtl ? (base_rtl ? 1 : 0) : (base_rtl ? 2 : 1));
+    const auto controls = [&](std::uint32_t span, bool open) -> std::u32string {
+        const TextSpan& s = c_.spans[span];
+        const bool rtl = s.style.text.rtl;
+        switch (s.props.unicode_bidi) {
+        case UnicodeBidi::Normal: return U"";
+        case UnicodeBidi::Embed: return open ? (rtl ? U"\u202B" : U"\u202A") : U"\u202C";
+        case UnicodeBidi::BidiOverride: return open ? (rtl ? U"\u202E" : U"\u202D") : U"\u202C";
+        case UnicodeBidi::Isolate: return open ? (rtl ? U"\u2067" : U"\u2066") : U"\u2069";
+        case UnicodeBidi::Plaintext: return open ? U"\u2068" : U"\u2069";
+        case UnicodeBidi::IsolateOverride:
+            return open ? (rtl ? U"\u2067\u202E" : U"\u2066\u202D") : U"\u202C\u2069";
         }
+        return U"";
+    };
+    const auto chain = [&](std::uint32_t span) { // the spans around a character, outermost first
+        std::vector<std::uint32_t> c{span};
+        while (c.back() != 0) c.push_back(c_.spans[c.back()].parent);
+        std::reverse(c.begin(), c.end());
+        return c;
+    };
+    if (dir == TextDirection::Ttb) return {};
+    std::u32string marked;
+    std::vector<std::size_t> at(e - b);
+    std::vector<std::uint32_t> open;
+    bool any = false;
+    for (std::size_t i = b; i <= e; ++i) {
+        const std::vector<std::uint32_t> now = i < e ? chain(c_.chars[i].span) : std::vector<std::uint32_t>{};
+        std::size_t same = 0;
+        while (same < open.size() && same < now.size() && open[same] == now[same]) ++same;
+        for (std::size_t k = open.size(); k > same; --k) marked += controls(open[k - 1], false);
+        for (std::size_t k = same; k < now.size(); ++k) {
+            const std::u32string c = controls(now[k], true);
+            any = any || !c.empty();
+            marked += c;
+        }
+        open = now;
+        if (i < e) at[i - b] = marked.size(), marked += text[i - b];
+    }
+    if (!any) return {};
+    const std::vector<std::uint8_t> all = bidi_levels(marked, dir == TextDirection::Rtl);
+    std::vector<std::uint8_t> levels(e - b);
+    for (std::size_t i = 0; i < levels.size(); ++i) levels[i] = all[at[i]];
     return levels;
 }
 
@@ -202,7 +233,7 @@ void Layouter::chunk(std::size_t b, std::size_t e) {
     std::vector<std::uint32_t> style_of;
     for (std::size_t i = b; i < e; ++i) text.push_back(c_.chars[i].c), style_of.push_back(c_.chars[i].span);
     const TextDirection dir = vert                             ? TextDirection::Ttb
-                              : span_of(b).style.text.rtl      ? TextDirection::Rtl
+                              : c_.spans[0].style.text.rtl     ? TextDirection::Rtl
                                                                : TextDirection::Ltr;
     const std::vector<std::uint8_t> levels = bidi_of(b, e, text, dir);
     std::vector<LaidGlyph> glyphs =
@@ -225,8 +256,11 @@ void Layouter::chunk(std::size_t b, std::size_t e) {
     }
     // text-anchor: the chunk moved by its advance, or half of it.
     const double length = vert ? pen.y - start.y : pen.x - start.x;
+    // The anchor of the chunk's first character's element; the direction
+    // of the paragraph, the text element's (CSS Writing Modes 3, 2.1: an
+    // inline element's direction acts only through unicode-bidi).
     const TextState& ts = span_of(b).style.text;
-    const bool rtl = ts.rtl && !vert;
+    const bool rtl = c_.spans[0].style.text.rtl && !vert;
     const double shift = ts.anchor == TextAnchor::Middle ? -length / 2
                          : (ts.anchor == TextAnchor::End) != rtl ? -length
                                                                  : 0;

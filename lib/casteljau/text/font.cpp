@@ -65,26 +65,38 @@ FontMetrics metrics_of(FT_Face face) {
     m.descender = face->descender;
     m.underline_position = face->underline_position;
     m.underline_thickness = face->underline_thickness;
-    // Fonts without an OS/2 table keep proportions of the em, as browsers guess.
+    // The x-height and cap height of the OS/2 table (version 2 on), else
+    // the heights of the glyphs x and H, as browsers measure them, else
+    // proportions of the em.
     m.x_height = m.units_per_em / 2;
     m.cap_height = m.units_per_em * 0.7;
-    m.strikeout_thickness = m.underline_thickness;
-    m.strikeout_position = m.x_height / 2;
-    if (const auto* os2 = static_cast<const TT_OS2*>(FT_Get_Sfnt_Table(face, FT_SFNT_OS2));
-        os2 && os2->version != 0xFFFF) {
-        if (os2->sxHeight > 0) m.x_height = os2->sxHeight;
-        if (os2->sCapHeight > 0) m.cap_height = os2->sCapHeight;
-        if (os2->yStrikeoutSize > 0) m.strikeout_thickness = os2->yStrikeoutSize;
-        if (os2->yStrikeoutPosition > 0)
-            m.strikeout_position = os2->yStrikeoutPosition + m.strikeout_thickness / 2;
-    }
+    const auto* os2 = static_cast<const TT_OS2*>(FT_Get_Sfnt_Table(face, FT_SFNT_OS2));
+    if (os2 && os2->version == 0xFFFF) os2 = nullptr; // FreeType's mark of a missing table
+    const auto top_of = [&](char32_t c, double& out) {
+        const FT_UInt g = FT_Get_Char_Index(face, c);
+        if (g != 0 && FT_Load_Glyph(face, g, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING) == 0 &&
+            face->glyph->metrics.horiBearingY > 0)
+            out = double(face->glyph->metrics.horiBearingY);
+    };
+    if (os2 && os2->version >= 2 && os2->sxHeight > 0) m.x_height = os2->sxHeight;
+    else top_of('x', m.x_height);
+    if (os2 && os2->version >= 2 && os2->sCapHeight > 0) m.cap_height = os2->sCapHeight;
+    else top_of('H', m.cap_height);
     if (m.underline_thickness <= 0) m.underline_thickness = m.units_per_em / 14;
-    if (m.strikeout_thickness <= 0) m.strikeout_thickness = m.underline_thickness;
-    if (m.ascender <= 0 && m.descender >= 0) m.ascender = m.units_per_em * 0.8, m.descender = -m.units_per_em * 0.2;
+    m.strikeout_thickness = os2 && os2->yStrikeoutSize > 0 ? os2->yStrikeoutSize
+                                                            : m.underline_thickness;
+    m.strikeout_position = os2 && os2->yStrikeoutPosition > 0
+                               ? os2->yStrikeoutPosition - m.strikeout_thickness / 2 // its top
+                               : m.x_height / 2;
+    if (m.ascender <= 0 && m.descender >= 0) // no usable vertical metrics: the em's usual split
+        m.ascender = m.units_per_em * 0.8, m.descender = -m.units_per_em * 0.2;
     return m;
 }
 
-Point pt(const FT_Vector* v) { return {double(v->x), double(v->y)}; }
+// Coordinates come doubled (the outline functions' shift of 1): the
+// on-curve point TrueType implies between two off-curve points is their
+// midpoint, which FreeType computes in integers; doubled, it is exact.
+Point pt(const FT_Vector* v) { return {v->x / 2.0, v->y / 2.0}; }
 
 struct Decomposer {
     static int move(const FT_Vector* to, void* user) {
@@ -108,7 +120,7 @@ struct Decomposer {
 // The contours of an outline, each closed: a glyph is a filled area.
 Path path_of(FT_Outline& outline) {
     static const FT_Outline_Funcs funcs = {Decomposer::move, Decomposer::line, Decomposer::conic,
-                                           Decomposer::cubic, 0, 0};
+                                           Decomposer::cubic, 1, 0};
     Path contours;
     if (FT_Outline_Decompose(&outline, &funcs, &contours) != 0) return {};
     Path closed;

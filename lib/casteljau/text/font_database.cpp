@@ -13,6 +13,7 @@
 #include <fontconfig/fontconfig.h>
 
 #include <cctype>
+#include <filesystem>
 #include <map>
 #include <tuple>
 
@@ -128,6 +129,14 @@ FontDatabase::FontDatabase() : FontDatabase(true) {}
 FontDatabase::FontDatabase(bool system_config) : impl_(std::make_unique<Impl>()) {
     FcInit();
     impl_->config = system_config ? FcInitLoadConfigAndFonts() : FcConfigCreate();
+    // An empty configuration still needs a cache folder, or fontconfig
+    // complains of each folder added (and rescans it every time).
+    if (!system_config)
+        FcConfigParseAndLoadFromMemory(
+            impl_->config,
+            reinterpret_cast<const FcChar8*>(
+                "<fontconfig><cachedir prefix=\"xdg\">fontconfig</cachedir></fontconfig>"),
+            FcFalse);
 }
 
 std::unique_ptr<FontDatabase> FontDatabase::empty() {
@@ -142,6 +151,8 @@ FontDatabase& FontDatabase::system() {
 }
 
 bool FontDatabase::add_font_dir(const std::string& dir) {
+    std::error_code e;
+    if (!std::filesystem::is_directory(dir, e)) return false; // fontconfig would say yes
     std::lock_guard lock(mutex_);
     impl_->matches.clear();
     return FcConfigAppFontAddDir(impl_->config, reinterpret_cast<const FcChar8*>(dir.c_str()));

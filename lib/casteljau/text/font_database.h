@@ -60,7 +60,8 @@ class FontDatabase {
     /// Adds one font file; false when fontconfig cannot read it.
     bool add_font_file(const std::string& file);
     /// The family used when none of a query's families is found
-    /// ("serif" unless set, as in browsers).
+    /// ("sans-serif" unless set: what fontconfig itself falls back to, as
+    /// librsvg and resvg do; browsers take serif).
     void set_default_family(std::string family);
     const std::string& default_family() const { return default_family_; }
 
@@ -83,7 +84,7 @@ class FontDatabase {
     std::optional<FontFace> find(const FontQuery& q, std::optional<char32_t> c);
     struct Impl;
     std::unique_ptr<Impl> impl_;
-    std::string default_family_ = "serif";
+    std::string default_family_ = "sans-serif";
     std::mutex mutex_;
 };
 
