@@ -138,7 +138,8 @@ struct Bez {
             std::array<double, N> roots{};
             int k = 0;
             if constexpr (N == 2) { // c0 (1 - t) + c1 t
-                if ((c[0] < 0 && c[1] > 0) || (c[0] > 0 && c[1] < 0)) roots[k++] = c[0] / (c[0] - c[1]);
+                if ((c[0] < 0 && c[1] > 0) || (c[0] > 0 && c[1] < 0))
+                    roots[k++] = c[0] / (c[0] - c[1]);
             } else if constexpr (N == 3) { // Bernstein (c0, c1, c2) in the power basis
                 double q[2];
                 const int n = solve_quadratic(c[0] - 2 * c[1] + c[2], 2 * (c[1] - c[0]), c[0], q);

@@ -106,15 +106,20 @@ void Reader::text_characters(const pugi::xml_node& at, std::string_view utf8, st
         }
         r.after_space = c == ' ' && !preserve;
         if (r.content.chars.size() >= r.limit) {
-            if (!r.over) warn(at, "text past the limit of " + std::to_string(options_.max_text_characters) + " characters; not drawn");
+            if (!r.over)
+                warn(at, "text past the limit of " + std::to_string(options_.max_text_characters) +
+                             " characters; not drawn");
             r.over = true;
             return;
         }
         const std::size_t i = r.content.chars.size();
-        TextChar tc{c, span, value_at(r.stack, i, &PositionLists::x),
+        TextChar tc{c,
+                    span,
+                    value_at(r.stack, i, &PositionLists::x),
                     value_at(r.stack, i, &PositionLists::y),
                     value_at(r.stack, i, &PositionLists::dx).value_or(0),
-                    value_at(r.stack, i, &PositionLists::dy).value_or(0), rotate_at(r.stack, i)};
+                    value_at(r.stack, i, &PositionLists::dy).value_or(0),
+                    rotate_at(r.stack, i)};
         r.content.chars.push_back(tc);
     }
 }
@@ -158,8 +163,9 @@ void Reader::text_positions(const pugi::xml_node& e, TextReading& r) {
         const pugi::xml_attribute a = e.attribute(attr);
         if (!a) return std::vector<double>{};
         auto v = parse_list(a.value(), percent_of, ctx, lengths);
-        if (!v) problem(e, std::string("attribute ") + attr + ": not a list of " +
-                               (lengths ? "lengths" : "numbers") + "; ignored");
+        if (!v)
+            problem(e, std::string("attribute ") + attr + ": not a list of " +
+                           (lengths ? "lengths" : "numbers") + "; ignored");
         return v.value_or(std::vector<double>{});
     };
     lists.x = list("x", vw_, true);
@@ -179,8 +185,12 @@ void Reader::text_children(const pugi::xml_node& e, TextReading& r, int depth) {
             continue;
         }
         if (c.type() != pugi::node_element) continue;
-        if (++elements_ > options_.max_elements || depth > options_.max_depth)
-            fail(c, "text nested too deep or too long (the element limits)");
+        if (++elements_ > options_.max_elements)
+            fail(c, "more than " + std::to_string(options_.max_elements) +
+                        " elements, <use> instances included (the limit)");
+        if (depth > options_.max_depth)
+            fail(c, "elements nested deeper than " + std::to_string(options_.max_depth) +
+                        ", <use> instances included (the limit)");
         const std::string_view name = c.name();
         if (name == "tspan" || name == "a") {
             if (!text_span(c, r, self)) continue;
@@ -253,7 +263,8 @@ bool Reader::text_path(const pugi::xml_node& e, TextReading& r) {
 void Reader::text(const pugi::xml_node& n, const StyleState& style, const ElementProps& props,
                   const Affine& m, Group& out, int depth) {
     TextReading r;
-    r.limit = options_.max_text_characters - std::min(text_characters_, options_.max_text_characters);
+    r.limit =
+        options_.max_text_characters - std::min(text_characters_, options_.max_text_characters);
     TextSpan root;
     root.node = n;
     root.style = style;
@@ -296,7 +307,8 @@ void add_piece(Path& path, const DecorationPiece& d) {
 void Reader::draw_text(const TextContent& content, const TextLayout& layout, const Affine& m,
                        const ElementProps& props, Group& out) {
     std::vector<Path> glyphs(content.spans.size());
-    for (const PlacedGlyph& g : layout.glyphs) append_glyph(glyphs[g.glyph.style], g.glyph, g.transform);
+    for (const PlacedGlyph& g : layout.glyphs)
+        append_glyph(glyphs[g.glyph.style], g.glyph, g.transform);
     // Decorations by owner and line: 0 underline, 1 overline, 2 line-through.
     std::vector<std::array<Path, 3>> lines(content.spans.size());
     for (const DecorationPiece& d : layout.decorations) add_piece(lines[d.owner][d.line], d);

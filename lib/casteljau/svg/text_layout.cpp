@@ -56,13 +56,13 @@ bool upright(char32_t c) {
 }
 
 struct Cluster {
-    std::size_t g0 = 0, g1 = 0;       // its glyphs in the chunk's glyph list
-    std::size_t begin = 0, end = 0;   // its characters
+    std::size_t g0 = 0, g1 = 0;     // its glyphs in the chunk's glyph list
+    std::size_t begin = 0, end = 0; // its characters
     std::uint32_t span = 0;
-    double advance = 0;               // along the line, px, spacing included
-    double stretch = 1;               // spacingAndGlyphs
-    double extra = 0;                 // textLength's spacing after it
-    Point pen;                        // where its origin is, before anchoring
+    double advance = 0; // along the line, px, spacing included
+    double stretch = 1; // spacingAndGlyphs
+    double extra = 0;   // textLength's spacing after it
+    Point pen;          // where its origin is, before anchoring
     bool upright = false;
 };
 
@@ -103,20 +103,34 @@ class Layouter {
     double baseline(std::uint32_t span) const {
         const TextSpan& s = c_.spans[span];
         Baseline b = s.props.alignment_baseline != Baseline::Auto ? s.props.alignment_baseline
-                                                                   : s.style.text.dominant_baseline;
+                                                                  : s.style.text.dominant_baseline;
         double up = 0;
         if (primary_[span]) {
             const FontMetrics& m = primary_[span]->metrics();
             switch (b) {
             case Baseline::Auto:
-            case Baseline::Alphabetic: up = 0; break;
+            case Baseline::Alphabetic:
+                up = 0;
+                break;
             case Baseline::Ideographic:
-            case Baseline::TextAfterEdge: up = m.descender; break;
-            case Baseline::Middle: up = m.x_height / 2; break;
-            case Baseline::Central: up = (m.ascender + m.descender) / 2; break;
-            case Baseline::Mathematical: up = m.ascender / 2; break;
-            case Baseline::Hanging: up = m.ascender * 0.8; break; // as resvg, for fonts without BASE
-            case Baseline::TextBeforeEdge: up = m.ascender; break;
+            case Baseline::TextAfterEdge:
+                up = m.descender;
+                break;
+            case Baseline::Middle:
+                up = m.x_height / 2;
+                break;
+            case Baseline::Central:
+                up = (m.ascender + m.descender) / 2;
+                break;
+            case Baseline::Mathematical:
+                up = m.ascender / 2;
+                break;
+            case Baseline::Hanging:
+                up = m.ascender * 0.8;
+                break; // as resvg, for fonts without BASE
+            case Baseline::TextBeforeEdge:
+                up = m.ascender;
+                break;
             }
         }
         return up * unit(span) - s.baseline_shift;
@@ -149,11 +163,16 @@ std::vector<std::uint8_t> Layouter::bidi_of(std::size_t b, std::size_t e, std::u
         const TextSpan& s = c_.spans[span];
         const bool rtl = s.style.text.rtl;
         switch (s.props.unicode_bidi) {
-        case UnicodeBidi::Normal: return U"";
-        case UnicodeBidi::Embed: return open ? (rtl ? U"\u202B" : U"\u202A") : U"\u202C";
-        case UnicodeBidi::BidiOverride: return open ? (rtl ? U"\u202E" : U"\u202D") : U"\u202C";
-        case UnicodeBidi::Isolate: return open ? (rtl ? U"\u2067" : U"\u2066") : U"\u2069";
-        case UnicodeBidi::Plaintext: return open ? U"\u2068" : U"\u2069";
+        case UnicodeBidi::Normal:
+            return U"";
+        case UnicodeBidi::Embed:
+            return open ? (rtl ? U"\u202B" : U"\u202A") : U"\u202C";
+        case UnicodeBidi::BidiOverride:
+            return open ? (rtl ? U"\u202E" : U"\u202D") : U"\u202C";
+        case UnicodeBidi::Isolate:
+            return open ? (rtl ? U"\u2067" : U"\u2066") : U"\u2069";
+        case UnicodeBidi::Plaintext:
+            return open ? U"\u2068" : U"\u2069";
         case UnicodeBidi::IsolateOverride:
             return open ? (rtl ? U"\u2067\u202E" : U"\u2066\u202D") : U"\u202C\u2069";
         }
@@ -171,7 +190,8 @@ std::vector<std::uint8_t> Layouter::bidi_of(std::size_t b, std::size_t e, std::u
     std::vector<std::uint32_t> open;
     bool any = false;
     for (std::size_t i = b; i <= e; ++i) {
-        const std::vector<std::uint32_t> now = i < e ? chain(c_.chars[i].span) : std::vector<std::uint32_t>{};
+        const std::vector<std::uint32_t> now =
+            i < e ? chain(c_.chars[i].span) : std::vector<std::uint32_t>{};
         std::size_t same = 0;
         while (same < open.size() && same < now.size() && open[same] == now[same]) ++same;
         for (std::size_t k = open.size(); k > same; --k) marked += controls(open[k - 1], false);
@@ -200,7 +220,8 @@ std::vector<Cluster> Layouter::clusters_of(const std::vector<LaidGlyph>& glyphs,
         c.g1 = i + 1;
         const int orientation = c_.spans[c.span].style.text.glyph_orientation_vertical;
         c.upright = vert && (orientation == 0 || (orientation < 0 && upright(c_.chars[c.begin].c)));
-        c.advance += c.upright && g.font ? g.font->vertical_advance(g.glyph) * g.scale : g.advance.x;
+        c.advance +=
+            c.upright && g.font ? g.font->vertical_advance(g.glyph) * g.scale : g.advance.x;
     }
     for (Cluster& c : cl) {
         const TextStyle& s = styles_[c.span];
@@ -215,7 +236,8 @@ void Layouter::apply_text_lengths(std::vector<Cluster>& cl) const {
         double natural = 0;
         std::size_t n = 0, last = 0;
         for (std::size_t i = 0; i < cl.size(); ++i)
-            if (cl[i].begin >= L.begin && cl[i].begin < L.end) natural += cl[i].advance, ++n, last = i;
+            if (cl[i].begin >= L.begin && cl[i].begin < L.end)
+                natural += cl[i].advance, ++n, last = i;
         if (n == 0 || natural <= 0) continue;
         for (std::size_t i = 0; i < cl.size(); ++i) {
             if (cl[i].begin < L.begin || cl[i].begin >= L.end) continue;
@@ -231,10 +253,11 @@ void Layouter::chunk(std::size_t b, std::size_t e) {
     const bool vert = vertical(b);
     std::u32string text;
     std::vector<std::uint32_t> style_of;
-    for (std::size_t i = b; i < e; ++i) text.push_back(c_.chars[i].c), style_of.push_back(c_.chars[i].span);
-    const TextDirection dir = vert                             ? TextDirection::Ttb
-                              : c_.spans[0].style.text.rtl     ? TextDirection::Rtl
-                                                               : TextDirection::Ltr;
+    for (std::size_t i = b; i < e; ++i)
+        text.push_back(c_.chars[i].c), style_of.push_back(c_.chars[i].span);
+    const TextDirection dir = vert                         ? TextDirection::Ttb
+                              : c_.spans[0].style.text.rtl ? TextDirection::Rtl
+                                                           : TextDirection::Ltr;
     const std::vector<std::uint8_t> levels = bidi_of(b, e, text, dir);
     std::vector<LaidGlyph> glyphs =
         shape_paragraph(fonts_, text, styles_, style_of, dir, levels.empty() ? nullptr : &levels);
@@ -246,10 +269,12 @@ void Layouter::chunk(std::size_t b, std::size_t e) {
     const int path = span_of(b).text_path;
     const bool path_starts = path >= 0 && (b == 0 || span_of(b - 1).text_path != path);
     const Point from = path < 0 ? pen_ : path_starts ? Point{0, 0} : path_pen_;
-    const Point start{c_.chars[b].x.value_or(from.x), path >= 0 ? from.y : c_.chars[b].y.value_or(from.y)};
+    const Point start{c_.chars[b].x.value_or(from.x),
+                      path >= 0 ? from.y : c_.chars[b].y.value_or(from.y)};
     Point pen = start;
     for (Cluster& c : cl) {
-        for (std::size_t i = c.begin; i < c.end; ++i) pen = pen + Vec2{c_.chars[i].dx, c_.chars[i].dy};
+        for (std::size_t i = c.begin; i < c.end; ++i)
+            pen = pen + Vec2{c_.chars[i].dx, c_.chars[i].dy};
         c.pen = pen;
         const double step = c.advance * c.stretch + c.extra;
         pen = pen + (vert ? Vec2{0, step} : Vec2{step, 0});
@@ -261,7 +286,7 @@ void Layouter::chunk(std::size_t b, std::size_t e) {
     // inline element's direction acts only through unicode-bidi).
     const TextState& ts = span_of(b).style.text;
     const bool rtl = c_.spans[0].style.text.rtl && !vert;
-    const double shift = ts.anchor == TextAnchor::Middle ? -length / 2
+    const double shift = ts.anchor == TextAnchor::Middle         ? -length / 2
                          : (ts.anchor == TextAnchor::End) != rtl ? -length
                                                                  : 0;
     const Vec2 move = vert ? Vec2{0, shift} : Vec2{shift, 0};
@@ -273,7 +298,8 @@ void Layouter::chunk(std::size_t b, std::size_t e) {
     }
     const TextPathRef& ref = c_.paths[std::size_t(path)];
     const PathMeasure measure(ref.path, 0.01);
-    const double offset = ref.start_percent ? ref.start_offset * measure.length() : ref.start_offset;
+    const double offset =
+        ref.start_percent ? ref.start_offset * measure.length() : ref.start_offset;
     for (const Cluster& c : cl) {
         const double half = c.advance * c.stretch / 2;
         double d = offset + c.pen.x + half;
@@ -316,14 +342,14 @@ void Layouter::place(const std::vector<LaidGlyph>& glyphs, const Cluster& c, con
         const FontMetrics mo = primary_[owner] ? primary_[owner]->metrics() : FontMetrics{};
         const double width = c.advance * c.stretch + c.extra;
         if (d.underline)
-            out_.decorations.push_back({owner, 0, width, -mo.underline_position * ko,
-                                        mo.underline_thickness * ko, frame});
+            out_.decorations.push_back(
+                {owner, 0, width, -mo.underline_position * ko, mo.underline_thickness * ko, frame});
         if (d.overline)
             out_.decorations.push_back(
                 {owner, 1, width, -mo.ascender * ko, mo.underline_thickness * ko, frame});
         if (d.line_through)
-            out_.decorations.push_back({owner, 2, width, -mo.strikeout_position * ko,
-                                        mo.strikeout_thickness * ko, frame});
+            out_.decorations.push_back(
+                {owner, 2, width, -mo.strikeout_position * ko, mo.strikeout_thickness * ko, frame});
     }
 }
 

@@ -64,14 +64,14 @@ struct TextState {
     std::vector<std::string> font_family; ///< empty: the font database's default
     int font_weight = 400;
     FontStyle font_style = FontStyle::Normal;
-    int font_stretch = 100;           ///< percent
-    bool small_caps = false;          ///< font-variant(-caps): small-caps
-    bool kerning = true;              ///< font-kerning: none turns it off
-    std::vector<FontVariation> variations; ///< font-variation-settings
-    std::vector<FontFeature> features;     ///< font-feature-settings
+    int font_stretch = 100;                 ///< percent
+    bool small_caps = false;                ///< font-variant(-caps): small-caps
+    bool kerning = true;                    ///< font-kerning: none turns it off
+    std::vector<FontVariation> variations;  ///< font-variation-settings
+    std::vector<FontFeature> features;      ///< font-feature-settings
     std::optional<double> font_size_adjust; ///< none when nullopt
-    double letter_spacing = 0;  ///< px
-    double word_spacing = 0;    ///< px
+    double letter_spacing = 0;              ///< px
+    double word_spacing = 0;                ///< px
     TextAnchor anchor = TextAnchor::Start;
     Baseline dominant_baseline = Baseline::Auto;
     WritingMode writing_mode = WritingMode::HorizontalTb;

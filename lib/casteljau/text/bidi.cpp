@@ -4,9 +4,8 @@
 // at that level or above is reversed.
 #include "casteljau/text/bidi.h"
 
-#include <fribidi.h>
-
 #include <algorithm>
+#include <fribidi.h>
 
 namespace casteljau {
 

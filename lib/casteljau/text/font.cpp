@@ -78,13 +78,17 @@ FontMetrics metrics_of(FT_Face face) {
             face->glyph->metrics.horiBearingY > 0)
             out = double(face->glyph->metrics.horiBearingY);
     };
-    if (os2 && os2->version >= 2 && os2->sxHeight > 0) m.x_height = os2->sxHeight;
-    else top_of('x', m.x_height);
-    if (os2 && os2->version >= 2 && os2->sCapHeight > 0) m.cap_height = os2->sCapHeight;
-    else top_of('H', m.cap_height);
+    if (os2 && os2->version >= 2 && os2->sxHeight > 0)
+        m.x_height = os2->sxHeight;
+    else
+        top_of('x', m.x_height);
+    if (os2 && os2->version >= 2 && os2->sCapHeight > 0)
+        m.cap_height = os2->sCapHeight;
+    else
+        top_of('H', m.cap_height);
     if (m.underline_thickness <= 0) m.underline_thickness = m.units_per_em / 14;
-    m.strikeout_thickness = os2 && os2->yStrikeoutSize > 0 ? os2->yStrikeoutSize
-                                                            : m.underline_thickness;
+    m.strikeout_thickness =
+        os2 && os2->yStrikeoutSize > 0 ? os2->yStrikeoutSize : m.underline_thickness;
     m.strikeout_position = os2 && os2->yStrikeoutPosition > 0
                                ? os2->yStrikeoutPosition - m.strikeout_thickness / 2 // its top
                                : m.x_height / 2;
@@ -119,8 +123,8 @@ struct Decomposer {
 
 // The contours of an outline, each closed: a glyph is a filled area.
 Path path_of(FT_Outline& outline) {
-    static const FT_Outline_Funcs funcs = {Decomposer::move, Decomposer::line, Decomposer::conic,
-                                           Decomposer::cubic, 1, 0};
+    static const FT_Outline_Funcs funcs = {
+        Decomposer::move, Decomposer::line, Decomposer::conic, Decomposer::cubic, 1, 0};
     Path contours;
     if (FT_Outline_Decompose(&outline, &funcs, &contours) != 0) return {};
     Path closed;

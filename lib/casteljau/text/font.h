@@ -83,7 +83,7 @@ class Font {
     std::string family_;
     std::size_t glyph_count_ = 0;
     std::vector<std::uint32_t> axes_; // design axis tags, big-endian packed
-    mutable std::mutex mutex_; // FreeType faces are not thread-safe
+    mutable std::mutex mutex_;        // FreeType faces are not thread-safe
     mutable std::unordered_map<std::uint32_t, Path> outlines_;
 };
 

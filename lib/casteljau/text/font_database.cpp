@@ -10,10 +10,9 @@
 // part of fontconfig, and a document asks the same few queries again and again.
 #include "casteljau/text/font_database.h"
 
-#include <fontconfig/fontconfig.h>
-
 #include <cctype>
 #include <filesystem>
+#include <fontconfig/fontconfig.h>
 #include <map>
 #include <tuple>
 

@@ -4,9 +4,8 @@
 #include "casteljau/text/bidi.h"
 #include "casteljau/text/utf8.h"
 
-#include <hb.h>
-
 #include <algorithm>
+#include <hb.h>
 #include <map>
 
 namespace casteljau {
@@ -55,8 +54,7 @@ std::vector<std::shared_ptr<const Font>> fonts_of(FontDatabase& db, std::u32stri
                                                   const std::vector<std::uint32_t>& style_of) {
     std::vector<std::shared_ptr<const Font>> primary(styles.size());
     for (std::size_t s = 0; s < styles.size(); ++s)
-        if (const auto face = db.match(styles[s].font))
-            primary[s] = load(db, *face, styles[s]);
+        if (const auto face = db.match(styles[s].font)) primary[s] = load(db, *face, styles[s]);
     std::map<std::pair<std::uint32_t, char32_t>, std::shared_ptr<const Font>> fallbacks;
     std::vector<std::shared_ptr<const Font>> fonts(text.size());
     for (std::size_t i = 0; i < text.size(); ++i) {
@@ -76,8 +74,7 @@ std::vector<std::shared_ptr<const Font>> fonts_of(FontDatabase& db, std::u32stri
         }
         auto& f = fallbacks[{s, c}];
         if (!f)
-            if (const auto face = db.fallback(styles[s].font, c))
-                f = load(db, *face, styles[s]);
+            if (const auto face = db.fallback(styles[s].font, c)) f = load(db, *face, styles[s]);
         fonts[i] = has(f) ? f : primary[s]; // none has it: the style's missing glyph
     }
     return fonts;
@@ -127,8 +124,8 @@ void shape_item(std::u32string_view text, std::size_t begin, std::size_t end, bo
         const std::size_t cluster_end = next == starts.end() ? end : *next;
         const bool first = i == 0 || glyphs[i - 1].cluster != g.cluster;
         out.push_back({font, g.glyph, g.cluster, cluster_end, first, style_of[g.cluster], k,
-                       Vec2{g.x_advance * k, -g.y_advance * k}, Vec2{g.x_offset * k, -g.y_offset * k},
-                       rtl});
+                       Vec2{g.x_advance * k, -g.y_advance * k},
+                       Vec2{g.x_offset * k, -g.y_offset * k}, rtl});
     }
 }
 
@@ -145,9 +142,9 @@ std::vector<LaidGlyph> shape_paragraph(FontDatabase& fonts, std::u32string_view 
         return out;
     const std::vector<std::shared_ptr<const Font>> font = fonts_of(fonts, text, styles, style_of);
     const std::vector<std::uint8_t> levels =
-        given                                ? *given
-        : direction == TextDirection::Ttb    ? std::vector<std::uint8_t>(text.size(), 0)
-                                             : bidi_levels(text, direction == TextDirection::Rtl);
+        given                             ? *given
+        : direction == TextDirection::Ttb ? std::vector<std::uint8_t>(text.size(), 0)
+                                          : bidi_levels(text, direction == TextDirection::Rtl);
     for (const BidiRun& run : visual_runs(levels)) {
         // Items: maximal ranges of one font and one way of shaping.
         std::vector<std::pair<std::size_t, std::size_t>> items;
@@ -178,8 +175,8 @@ void append_glyph(Path& out, const LaidGlyph& g, const Affine& m) {
 }
 
 bool is_word_separator(char32_t c) {
-    return c == 0x20 || c == 0xA0 || c == 0x1361 || c == 0x10100 || c == 0x10101 ||
-           c == 0x1039F || c == 0x1091F;
+    return c == 0x20 || c == 0xA0 || c == 0x1361 || c == 0x10100 || c == 0x10101 || c == 0x1039F ||
+           c == 0x1091F;
 }
 
 namespace {

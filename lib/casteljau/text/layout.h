@@ -34,7 +34,7 @@ struct TextStyle {
     std::vector<FontVariation> variations;
     /// OpenType features: kerning off is {"kern", false}, small caps {"smcp"}.
     std::vector<FontFeature> features;
-    std::string language; ///< BCP 47, "" for the default
+    std::string language;      ///< BCP 47, "" for the default
     double letter_spacing = 0; ///< px after each cluster (CSS Text 3, 8.2)
     double word_spacing = 0;   ///< px after each space (CSS Text 3, 8.1)
 };

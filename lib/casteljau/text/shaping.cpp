@@ -30,7 +30,7 @@ std::vector<ShapedGlyph> shape_run(const Font& font, std::u32string_view text, s
     const hb_glyph_position_t* pos = hb_buffer_get_glyph_positions(buf, &n);
     std::vector<ShapedGlyph> glyphs(n);
     for (unsigned i = 0; i < n; ++i)
-        glyphs[i] = {info[i].codepoint,     info[i].cluster,       double(pos[i].x_advance),
+        glyphs[i] = {info[i].codepoint,        info[i].cluster,         double(pos[i].x_advance),
                      double(pos[i].y_advance), double(pos[i].x_offset), double(pos[i].y_offset)};
     hb_buffer_destroy(buf);
     return glyphs;

@@ -20,7 +20,8 @@ std::u32string decode_utf8(std::string_view text) {
         int length = 0;
         char32_t c = 0;
         unsigned char lo = 0x80, hi = 0xBF; // the second byte's range (table 3-7)
-        if (b >= 0xC2 && b <= 0xDF) length = 2, c = b & 0x1F;
+        if (b >= 0xC2 && b <= 0xDF)
+            length = 2, c = b & 0x1F;
         else if (b >= 0xE0 && b <= 0xEF) {
             length = 3, c = b & 0x0F;
             if (b == 0xE0) lo = 0xA0;

@@ -26,7 +26,7 @@ struct TextSpan {
     double baseline_shift = 0;
     /// The spans whose text-decoration it is drawn with, outermost first.
     std::vector<std::uint32_t> decorations;
-    int text_path = -1; ///< index into TextContent::paths, or -1
+    int text_path = -1;       ///< index into TextContent::paths, or -1
     std::uint32_t parent = 0; ///< the span of the parent element (the text's own: itself)
 };
 
