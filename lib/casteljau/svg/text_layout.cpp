@@ -327,12 +327,15 @@ void Layouter::place(const std::vector<LaidGlyph>& glyphs, const Cluster& c, con
     if (vert && !c.upright) // turned: its baseline runs down the line's middle
         frame = at * turn * Affine::rotate(std::numbers::pi / 2) *
                 Affine::translate({0, (m.ascender + m.descender) / 2 * k});
-    double x = 0;
+    double x = 0, y = 0; // the pen within the cluster: across, and down for upright glyphs
     for (std::size_t i = c.g0; i < c.g1; ++i) {
         const LaidGlyph& g = glyphs[i];
         Affine place = frame * Affine::translate({x, 0}) * Affine::scale(c.stretch, 1);
-        if (c.upright) // upright in vertical text: the glyph's top at the pen, centred on the line
-            place = at * turn * Affine::translate({-g.advance.x / 2, m.ascender * k});
+        if (c.upright && g.font) { // upright in vertical text: its vertical origin on the pen
+            const Vec2 o = g.font->vertical_origin(g.glyph) * g.scale;
+            place = at * turn * Affine::translate({-o.x, y + o.y});
+            y += g.font->vertical_advance(g.glyph) * g.scale;
+        }
         out_.glyphs.push_back({g, place});
         x += g.advance.x * c.stretch;
     }

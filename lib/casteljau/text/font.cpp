@@ -206,12 +206,13 @@ double Font::advance(std::uint32_t glyph) const {
 }
 
 double Font::vertical_advance(std::uint32_t glyph) const {
-    std::lock_guard lock(mutex_);
-    FT_Fixed a = 0;
-    if (!FT_HAS_VERTICAL(impl_->face) ||
-        FT_Get_Advance(impl_->face, glyph, FT_LOAD_NO_SCALE | FT_LOAD_VERTICAL_LAYOUT, &a) != 0)
-        return metrics_.units_per_em;
-    return double(a);
+    return -double(hb_font_get_glyph_v_advance(impl_->hb, glyph)); // HarfBuzz's is y up: negative
+}
+
+Vec2 Font::vertical_origin(std::uint32_t glyph) const {
+    hb_position_t x = 0, y = 0;
+    hb_font_get_glyph_v_origin(impl_->hb, glyph, &x, &y);
+    return {double(x), double(y)};
 }
 
 } // namespace casteljau

@@ -62,9 +62,13 @@ class Font {
     const Path& outline(std::uint32_t glyph) const;
     /// The glyph's horizontal advance in font units.
     double advance(std::uint32_t glyph) const;
-    /// The glyph's vertical advance in font units (the em when the font has
-    /// no vertical metrics).
+    /// The glyph's vertical advance in font units (HarfBuzz's: the font's
+    /// vertical metrics, else its ascender to its descender).
     double vertical_advance(std::uint32_t glyph) const;
+    /// Where the glyph's vertical origin is from its horizontal one, font
+    /// units, y up: what sits on the line of upright vertical text (the VORG
+    /// table, else half the advance across and the ascender up).
+    Vec2 vertical_origin(std::uint32_t glyph) const;
     std::size_t glyph_count() const { return glyph_count_; }
     /// Whether the font is variable along the design axis `tag` ("wght").
     bool has_axis(const char tag[4]) const;
