@@ -19,7 +19,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"; shift || true
 targets=("$@")
-[[ ${#targets[@]} -gt 0 ]] || targets=(path_data svg_read svg_render patch_read patch_render filter_graph)
+[[ ${#targets[@]} -gt 0 ]] || targets=(path_data svg_read svg_render patch_read patch_render filter_graph text_layout)
 
 # -g1: line tables only, enough for the sanitizers' file:line stack traces.
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
@@ -34,11 +34,12 @@ for name in "${targets[@]}"; do
     cp tests/fuzz/corpus/"$name"/* "$work"/
     [[ -d tests/fuzz/regressions/$name ]] && cp tests/fuzz/regressions/"$name"/* "$work"/
     timeout=2
-    [[ $name == *_render ]] && timeout=10
+    [[ $name == *_render || $name == text_layout ]] && timeout=10
     dict=()
     case "$name" in
         svg_*) dict=(-dict=tests/fuzz/svg.dict) ;;
         path_data) dict=(-dict=tests/fuzz/path_data.dict) ;;
+        text_layout) dict=(-dict=tests/fuzz/text_layout.dict) ;;
     esac
     echo "fuzz_$name: ${seconds}s"
     if ! UBSAN_OPTIONS=print_stacktrace=1 LSAN_OPTIONS=suppressions=tests/lsan.supp "build-fuzz/tests/fuzz/fuzz_$name" "$work" "${dict[@]}" \

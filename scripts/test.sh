@@ -8,6 +8,9 @@ cd "$(dirname "$0")/.."
 jobs=$(nproc)
 
 bash scripts/setup.sh
+# Every test draws text with the fonts setup.sh installs, whatever else the
+# machine has (tests/text/fonts.conf).
+export FONTCONFIG_FILE=$PWD/tests/text/fonts.conf
 
 # CASTELJAU_PYTHON=ON: the Python package is required here (configuring fails
 # without python3-dev and pybind11-dev), and its pytest suite (tests/python,

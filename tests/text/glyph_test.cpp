@@ -15,6 +15,7 @@
 #include "casteljau/text/font.h"
 #include "casteljau/text/utf8.h"
 #include "coverage.h"
+#include "text_test_support.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,6 +32,9 @@
 
 namespace casteljau {
 namespace {
+
+using text_test::control_point_distance;
+using text_test::control_points;
 
 const std::string kDejaVuSans = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
 // A collection of CFF-flavoured OpenType faces; face 0 is Noto Sans CJK JP.
@@ -382,38 +386,6 @@ Path exact_outline(FT_Face face, std::uint32_t glyph) {
         closed.add_subpath(sp);
     }
     return closed;
-}
-
-// The control points of a segment, in order.
-std::vector<Point> control_points(const Segment& s) {
-    return std::visit(
-        [](const auto& c) -> std::vector<Point> {
-            if constexpr (requires { c.points(); })
-                return {c.points().begin(), c.points().end()};
-            else
-                return {c.p0, c.p1, c.p2};
-        },
-        s);
-}
-
-// The largest distance between corresponding control points of two paths
-// of the same structure; infinity when the structure differs.
-double control_point_distance(const Path& a, const Path& b) {
-    if (a.subpaths().size() != b.subpaths().size()) return INFINITY;
-    double d = 0;
-    for (std::size_t i = 0; i < a.subpaths().size(); ++i) {
-        const Subpath &p = a.subpaths()[i], &q = b.subpaths()[i];
-        if (p.segments.size() != q.segments.size() || p.closed != q.closed) return INFINITY;
-        d = std::max(d, distance(p.start, q.start));
-        for (std::size_t k = 0; k < p.segments.size(); ++k) {
-            const std::vector<Point> u = control_points(p.segments[k]),
-                                     v = control_points(q.segments[k]);
-            if (u.size() != v.size() || p.segments[k].index() != q.segments[k].index())
-                return INFINITY;
-            for (std::size_t j = 0; j < u.size(); ++j) d = std::max(d, distance(u[j], v[j]));
-        }
-    }
-    return d;
 }
 
 // Font::outline is the font's outline exactly: same contours, same

@@ -1,75 +1,39 @@
 // Text layout (text/layout.h) and what it stands on: shaping against
-// HarfBuzz called directly, the bidi levels and their visual order, UTF-8
-// decoding, font matching and fallback, one line set as a path, and arc
-// length along a path (curve/path_measure.h, which text on a path uses).
-// The fonts are the Debian packages the tests pin (fonts-dejavu-core,
-// fonts-noto-core), in a database of their own or through
-// tests/text/fonts.conf, never whatever the machine happens to have.
+// HarfBuzz called directly, a paragraph's runs in visual order with font
+// fallback, one line set as a path, and arc length along a path
+// (curve/path_measure.h, which text on a path uses). Bidi and UTF-8 are
+// unicode_test.cpp's, font matching font_database_test.cpp's. The fonts are
+// the Debian packages the tests pin (fonts-dejavu-core, fonts-noto-core), in
+// a database of their own (text_test_support.h), never whatever the machine
+// happens to have.
 #include "casteljau/curve/path_measure.h"
-#include "casteljau/text/bidi.h"
 #include "casteljau/text/font_database.h"
 #include "casteljau/text/layout.h"
 #include "casteljau/text/shaping.h"
 #include "casteljau/text/utf8.h"
 #include "corpus.h"
+#include "text_test_support.h"
 
+#include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
+#include <cstdint>
 #include <gtest/gtest.h>
 #include <hb.h>
+#include <memory>
 #include <numbers>
 #include <string>
-#include <unistd.h>
+#include <utility>
+#include <variant>
 #include <vector>
 
-namespace casteljau {
+namespace casteljau::text_test {
 namespace {
-
-const std::string kDejaVuDir = "/usr/share/fonts/truetype/dejavu";
-const std::string kNotoDir = "/usr/share/fonts/truetype/noto";
-const std::string kDejaVuSans = kDejaVuDir + "/DejaVuSans.ttf";
-const std::string kNotoDevanagari = kNotoDir + "/NotoSansDevanagari-Regular.ttf";
-
-// UTF-8 spelled out, for readability of the cases below.
-const char* const kAlefBetGimel = "\xD7\x90\xD7\x91\xD7\x92";   // אבג
-const char* const kSalam = "\xD8\xB3\xD9\x84\xD8\xA7\xD9\x85";  // سلام
-const char* const kSamiat = "\xD8\xB3\xD9\x85\xD8\xB9\xD8\xAA"; // سمعت
-const char* const kNamaste = "\xE0\xA4\xA8\xE0\xA4\xAE\xE0\xA4\xB8\xE0\xA5\x8D\xE0\xA4\xA4"
-                             "\xE0\xA5\x87"; // नमस्ते
-const char* const kSawasdee = "\xE0\xB8\xAA\xE0\xB8\xA7\xE0\xB8\xB1\xE0\xB8\xAA\xE0\xB8\x94"
-                              "\xE0\xB8\xB5"; // สวัสดี
-
-// DejaVu and Noto, and nothing else: made once (fontconfig scans the
-// folders) and shared by the tests that do not change it.
-FontDatabase& test_fonts() {
-    static const std::unique_ptr<FontDatabase> db = [] {
-        auto d = FontDatabase::empty();
-        EXPECT_TRUE(d->add_font_dir(kDejaVuDir));
-        EXPECT_TRUE(d->add_font_dir(kNotoDir));
-        return d;
-    }();
-    return *db;
-}
-
-FontQuery query(std::string family, int weight = 400, FontStyle style = FontStyle::Normal) {
-    FontQuery q;
-    q.families = {std::move(family)};
-    q.weight = weight;
-    q.style = style;
-    return q;
-}
 
 TextStyle style_of(std::string family, double size) {
     TextStyle s;
     s.font = query(std::move(family));
     s.size = size;
     return s;
-}
-
-std::string file_name(const std::optional<FontFace>& f) {
-    return f ? std::filesystem::path(f->file).filename().string() : "(none)";
 }
 
 std::shared_ptr<Font> load(const std::string& file) {
@@ -375,37 +339,6 @@ TEST(ShapeParagraph, EmptyAndMismatchedInputGiveNoGlyphs) {
 
 // ------------------------------------------------------------ one line
 
-// The control points of a segment, in order.
-std::vector<Point> control_points(const Segment& s) {
-    return std::visit(
-        [](const auto& c) -> std::vector<Point> {
-            if constexpr (requires { c.points(); })
-                return {c.points().begin(), c.points().end()};
-            else
-                return {c.p0, c.p1, c.p2};
-        },
-        s);
-}
-
-// The largest distance between corresponding control points of two paths
-// of the same structure; infinity when the structure differs.
-double control_point_distance(const Path& a, const Path& b) {
-    if (a.subpaths().size() != b.subpaths().size()) return INFINITY;
-    double d = 0;
-    for (std::size_t i = 0; i < a.subpaths().size(); ++i) {
-        const Subpath &p = a.subpaths()[i], &q = b.subpaths()[i];
-        if (p.segments.size() != q.segments.size() || p.closed != q.closed) return INFINITY;
-        d = std::max(d, distance(p.start, q.start));
-        for (std::size_t k = 0; k < p.segments.size(); ++k) {
-            if (p.segments[k].index() != q.segments[k].index()) return INFINITY;
-            const std::vector<Point> u = control_points(p.segments[k]),
-                                     v = control_points(q.segments[k]);
-            for (std::size_t j = 0; j < u.size(); ++j) d = std::max(d, distance(u[j], v[j]));
-        }
-    }
-    return d;
-}
-
 // "HEH" has flat-sided, flat-bottomed ends: its path's box is the line's
 // advance less the first glyph's left side bearing and the last one's right
 // side bearing, from the baseline up to the cap height, y down.
@@ -481,313 +414,6 @@ TEST(TextAdvance, LetterAndWordSpacing) {
     EXPECT_TRUE(is_word_separator(U'\u00A0'));
     EXPECT_FALSE(is_word_separator(U'\t'));
     EXPECT_FALSE(is_word_separator(U'a'));
-}
-
-// ------------------------------------------------------------------- bidi
-
-std::vector<std::uint8_t> levels_of(const std::string& utf8, bool rtl) {
-    return bidi_levels(decode_utf8(utf8), rtl);
-}
-
-using Levels = std::vector<std::uint8_t>;
-
-struct LevelRun {
-    std::size_t begin, end;
-    int level;
-    bool operator==(const LevelRun&) const = default;
-};
-std::ostream& operator<<(std::ostream& os, const LevelRun& r) {
-    return os << "[" << r.begin << ", " << r.end << ") at " << r.level;
-}
-std::vector<LevelRun> runs_of(const Levels& levels) {
-    std::vector<LevelRun> out;
-    for (const BidiRun& r : visual_runs(levels)) out.push_back({r.begin, r.end, r.level});
-    return out;
-}
-
-TEST(Bidi, LevelsOfSmallParagraphs) {
-    EXPECT_EQ(levels_of("abc", false), (Levels{0, 0, 0}));
-    EXPECT_EQ(runs_of(levels_of("abc", false)), (std::vector<LevelRun>{{0, 3, 0}}));
-    // Left to right in a right-to-left paragraph rises to level 2.
-    EXPECT_EQ(levels_of("abc", true), (Levels{2, 2, 2}));
-    const std::string mixed = std::string("abc ") + kAlefBetGimel;
-    EXPECT_EQ(levels_of(mixed, false), (Levels{0, 0, 0, 0, 1, 1, 1}));
-    EXPECT_EQ(runs_of(levels_of(mixed, false)), (std::vector<LevelRun>{{0, 4, 0}, {4, 7, 1}}));
-    // Base right to left: the space between the two takes the paragraph's
-    // direction, and the Latin word is drawn to the right of the Hebrew.
-    EXPECT_EQ(levels_of(mixed, true), (Levels{2, 2, 2, 1, 1, 1, 1}));
-    EXPECT_EQ(runs_of(levels_of(mixed, true)), (std::vector<LevelRun>{{3, 7, 1}, {0, 3, 2}}));
-    // European digits after Hebrew in a left-to-right paragraph: level 2,
-    // drawn left to right, left of the Hebrew.
-    const std::string digits = std::string(kAlefBetGimel) + " 123";
-    EXPECT_EQ(levels_of(digits, false), (Levels{1, 1, 1, 1, 2, 2, 2}));
-    EXPECT_EQ(runs_of(levels_of(digits, false)), (std::vector<LevelRun>{{4, 7, 2}, {0, 4, 1}}));
-    EXPECT_TRUE(bidi_levels(U"", true).empty());
-    EXPECT_TRUE(visual_runs({}).empty());
-}
-
-// L2 on levels set by hand (an override, say): from the highest level down
-// to the lowest odd one, every sequence at that level or above reverses.
-TEST(Bidi, VisualRunsReverseFromTheHighestLevel) {
-    EXPECT_EQ(runs_of({0, 1, 1, 2, 2, 1, 0}),
-              (std::vector<LevelRun>{{0, 1, 0}, {5, 6, 1}, {3, 5, 2}, {1, 3, 1}, {6, 7, 0}}));
-    // 3: c alone; 2: b c -> c b; 1: a c b -> b c a.
-    EXPECT_EQ(runs_of({1, 2, 3}), (std::vector<LevelRun>{{1, 2, 2}, {2, 3, 3}, {0, 1, 1}}));
-    // Even levels alone reverse in pairs: the order stays.
-    EXPECT_EQ(runs_of({0, 2, 4, 2}),
-              (std::vector<LevelRun>{{0, 1, 0}, {1, 2, 2}, {2, 3, 4}, {3, 4, 2}}));
-    // Against a brute-force L2 on characters, over seeded random levels.
-    testing::Rng rng(7);
-    for (int t = 0; t < 500; ++t) {
-        Levels levels(std::size_t(rng.integer(1, 12)));
-        for (auto& l : levels) l = std::uint8_t(rng.integer(0, 4));
-        std::vector<std::size_t> order(levels.size());
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-        const int highest = *std::max_element(levels.begin(), levels.end());
-        const int lowest = *std::min_element(levels.begin(), levels.end());
-        for (int level = highest; level >= (lowest | 1); --level)
-            for (std::size_t i = 0; i < order.size();) {
-                if (levels[order[i]] < level) {
-                    ++i;
-                    continue;
-                }
-                std::size_t j = i;
-                while (j < order.size() && levels[order[j]] >= level) ++j;
-                std::reverse(order.begin() + std::ptrdiff_t(i), order.begin() + std::ptrdiff_t(j));
-                i = j;
-            }
-        // The runs, each read in its own direction, give that order.
-        std::vector<std::size_t> from_runs;
-        for (const BidiRun& r : visual_runs(levels))
-            for (std::size_t k = 0; k < r.end - r.begin; ++k)
-                from_runs.push_back(r.rtl() ? r.end - 1 - k : r.begin + k);
-        EXPECT_EQ(from_runs, order) << "case " << t;
-    }
-}
-
-// ------------------------------------------------------------------ UTF-8
-
-std::u32string fffd(int n) { return std::u32string(std::size_t(n), U'\uFFFD'); }
-
-TEST(Utf8, WellFormedSequences) {
-    EXPECT_EQ(decode_utf8(""), U"");
-    EXPECT_EQ(decode_utf8("Az~\x7F"), U"Az~\x7F");
-    EXPECT_EQ(decode_utf8(std::string("a\0b", 3)), std::u32string(U"a\0b", 3));
-    EXPECT_EQ(decode_utf8("\xC2\x80\xC3\xA9\xDF\xBF"), U"\u0080\u00E9\u07FF");
-    EXPECT_EQ(decode_utf8("\xE0\xA0\x80\xE2\x82\xAC\xED\x9F\xBF\xEE\x80\x80\xEF\xBF\xBF"),
-              U"\u0800\u20AC\uD7FF\uE000\uFFFF");
-    EXPECT_EQ(decode_utf8("\xF0\x90\x80\x80\xF0\x9F\x98\x80\xF4\x8F\xBF\xBF"),
-              U"\U00010000\U0001F600\U0010FFFF");
-}
-
-// Each maximal subpart of an ill-formed sequence is one U+FFFD (Unicode 15,
-// 3.9, "U+FFFD substitution of maximal subparts").
-TEST(Utf8, IllFormedSequencesBecomeOneReplacementPerMaximalSubpart) {
-    // Overlong forms: C0 and C1 never start a sequence; E0 80..9F and
-    // F0 80..8F are not the start of one.
-    EXPECT_EQ(decode_utf8("\xC0\x80"), fffd(2));
-    EXPECT_EQ(decode_utf8("\xC1\xBF"), fffd(2));
-    EXPECT_EQ(decode_utf8("\xE0\x9F\xBF"), fffd(3));
-    EXPECT_EQ(decode_utf8("\xF0\x8F\xBF\xBF"), fffd(4));
-    // Surrogates, ED A0..BF.
-    EXPECT_EQ(decode_utf8("\xED\xA0\x80"), fffd(3));
-    EXPECT_EQ(decode_utf8("\xED\xBF\xBF"), fffd(3));
-    // Past U+10FFFF: F4 90.., and F5..FF never start one.
-    EXPECT_EQ(decode_utf8("\xF4\x90\x80\x80"), fffd(4));
-    EXPECT_EQ(decode_utf8("\xF5\x80\x80\x80"), fffd(4));
-    EXPECT_EQ(decode_utf8("\xFF\xFE"), fffd(2));
-    // Lone continuation bytes.
-    EXPECT_EQ(decode_utf8("\x80\xBF"), fffd(2));
-    // Truncated: a well-begun sequence cut short is one subpart.
-    EXPECT_EQ(decode_utf8("\xE2\x82"), fffd(1));
-    EXPECT_EQ(decode_utf8("\xE2\x82"
-                          "A"),
-              U"\uFFFDA");
-    EXPECT_EQ(decode_utf8("\xF0\x9F\x98"), fffd(1));
-    EXPECT_EQ(decode_utf8("\xF0\x9F\x98\xE2\x82\xAC"), U"\uFFFD\u20AC");
-    EXPECT_EQ(decode_utf8("\xC3"), fffd(1));
-    // The standard's examples (table 3-8 and the text before it).
-    EXPECT_EQ(decode_utf8("\xF1\x80\x80\xE1\x80\xC2\x41"), U"\uFFFD\uFFFD\uFFFDA");
-    EXPECT_EQ(decode_utf8("\x61\xF1\x80\x80\xE1\x80\xC2\x62\x80\x63\x80\xBF\x64"),
-              U"a\uFFFD\uFFFD\uFFFDb\uFFFDc\uFFFD\uFFFDd");
-}
-
-std::string encode_utf8(char32_t c) {
-    std::string s;
-    if (c < 0x80) {
-        s += char(c);
-    } else if (c < 0x800) {
-        s += char(0xC0 | (c >> 6));
-        s += char(0x80 | (c & 0x3F));
-    } else if (c < 0x10000) {
-        s += char(0xE0 | (c >> 12));
-        s += char(0x80 | ((c >> 6) & 0x3F));
-        s += char(0x80 | (c & 0x3F));
-    } else {
-        s += char(0xF0 | (c >> 18));
-        s += char(0x80 | ((c >> 12) & 0x3F));
-        s += char(0x80 | ((c >> 6) & 0x3F));
-        s += char(0x80 | (c & 0x3F));
-    }
-    return s;
-}
-
-// Every scalar value survives a round trip, and random bytes decode to
-// scalar values only, never more of them than there are bytes, with the
-// well-formed stretches intact.
-TEST(Utf8, RoundTripsAndRandomBytes) {
-    testing::Rng rng(36);
-    for (int t = 0; t < 200; ++t) {
-        std::u32string text;
-        std::string utf8;
-        for (int i = 0; i < 20; ++i) {
-            const int width = rng.integer(0, 3);
-            const char32_t limit[] = {0x80, 0x800, 0x10000, 0x110000};
-            char32_t c = char32_t(
-                rng.integer(width == 0 ? 0 : int(limit[width - 1]), int(limit[width]) - 1));
-            if (c >= 0xD800 && c < 0xE000) c = 0xFFFD;
-            text += c;
-            utf8 += encode_utf8(c);
-        }
-        EXPECT_EQ(decode_utf8(utf8), text) << t;
-    }
-    for (int t = 0; t < 500; ++t) {
-        std::string bytes;
-        for (int i = rng.integer(0, 30); i > 0; --i) bytes += char(rng.integer(0, 255));
-        const std::u32string out = decode_utf8(bytes);
-        EXPECT_LE(out.size(), bytes.size());
-        for (const char32_t c : out) {
-            EXPECT_LE(c, 0x10FFFFu);
-            EXPECT_FALSE(c >= 0xD800 && c < 0xE000);
-        }
-        // A valid character after the garbage comes through whole.
-        EXPECT_EQ(decode_utf8(bytes + "\xE2\x82\xAC").back(), U'\u20AC') << t;
-    }
-}
-
-// ---------------------------------------------------------- font database
-
-TEST(FontDatabase, MatchesWeightAndStyleToFiles) {
-    FontDatabase& db = test_fonts();
-    EXPECT_EQ(file_name(db.match(query("DejaVu Serif"))), "DejaVuSerif.ttf");
-    EXPECT_EQ(file_name(db.match(query("DejaVu Serif", 700))), "DejaVuSerif-Bold.ttf");
-    EXPECT_EQ(file_name(db.match(query("DejaVu Serif", 400, FontStyle::Italic))),
-              "DejaVuSerif-Italic.ttf");
-    EXPECT_EQ(file_name(db.match(query("DejaVu Serif", 700, FontStyle::Italic))),
-              "DejaVuSerif-BoldItalic.ttf");
-    // DejaVu Sans has no italic: its oblique is the closest.
-    EXPECT_EQ(file_name(db.match(query("DejaVu Sans", 400, FontStyle::Italic))),
-              "DejaVuSans-Oblique.ttf");
-    EXPECT_EQ(file_name(db.match(query("DejaVu Sans", 400, FontStyle::Oblique))),
-              "DejaVuSans-Oblique.ttf");
-    // The closest weight: 600 and 900 are bold, 300 and 100 regular or lighter.
-    EXPECT_EQ(file_name(db.match(query("DejaVu Sans", 900))), "DejaVuSans-Bold.ttf");
-    EXPECT_NE(file_name(db.match(query("DejaVu Sans", 300))), "DejaVuSans-Bold.ttf");
-    // Condensed when asked for a narrower stretch.
-    FontQuery narrow = query("DejaVu Sans");
-    narrow.stretch = 87;
-    EXPECT_EQ(file_name(db.match(narrow)), "DejaVuSansCondensed.ttf");
-    // Family names are matched without regard to case.
-    EXPECT_EQ(file_name(db.match(query("dejavu serif"))), "DejaVuSerif.ttf");
-}
-
-// Families are tried in order: the first one the database has wins; when
-// none is there, the default family.
-TEST(FontDatabase, UnknownFamiliesFallBackToTheDefaultFamily) {
-    auto db = FontDatabase::empty();
-    ASSERT_TRUE(db->add_font_dir(kDejaVuDir));
-    FontQuery q;
-    q.families = {"No Such Font", "DejaVu Serif", "DejaVu Sans"};
-    EXPECT_EQ(file_name(db->match(q)), "DejaVuSerif.ttf");
-    EXPECT_EQ(db->default_family(), "sans-serif");
-    db->set_default_family("DejaVu Sans Mono");
-    EXPECT_EQ(db->default_family(), "DejaVu Sans Mono");
-    EXPECT_EQ(file_name(db->match(query("No Such Font"))), "DejaVuSansMono.ttf");
-    EXPECT_EQ(file_name(db->match(query("No Such Font", 700))), "DejaVuSansMono-Bold.ttf");
-    EXPECT_EQ(file_name(db->match(FontQuery{})), "DejaVuSansMono.ttf");
-    db->set_default_family("DejaVu Serif");
-    EXPECT_EQ(file_name(db->match(query("No Such Font"))), "DejaVuSerif.ttf");
-    // A database without fonts matches nothing.
-    EXPECT_FALSE(FontDatabase::empty()->match(query("DejaVu Sans")));
-}
-
-// Adding fonts says whether it did: a font file is taken, a file that is
-// not a font is not.
-TEST(FontDatabase, AddingAFileThatIsNotAFontFails) {
-    auto db = FontDatabase::empty();
-    const std::filesystem::path garbage = std::filesystem::temp_directory_path() /
-                                          ("casteljau_not_a_font_" + std::to_string(::getpid()));
-    {
-        std::ofstream out(garbage, std::ios::binary);
-        for (int i = 0; i < 4096; ++i) out.put(char((i * 7919 + 13) % 251));
-    }
-    EXPECT_FALSE(db->add_font_file(garbage.string()));
-    std::filesystem::remove(garbage);
-    EXPECT_FALSE(db->add_font_file("/nonexistent/font.ttf"));
-    EXPECT_FALSE(db->match(query("DejaVu Sans")));
-    EXPECT_TRUE(db->add_font_file(kDejaVuSans));
-    EXPECT_EQ(file_name(db->match(query("DejaVu Sans"))), "DejaVuSans.ttf");
-}
-
-// font_database.h: add_font_dir is "false when it is not a readable folder".
-TEST(FontDatabase, AddingAFolderThatDoesNotExistFails) {
-    auto db = FontDatabase::empty();
-    EXPECT_FALSE(db->add_font_dir("/nonexistent/fonts"));
-    EXPECT_FALSE(db->add_font_dir(kDejaVuSans)); // a file, not a folder
-    EXPECT_TRUE(db->add_font_dir(kDejaVuDir));
-}
-
-// The system configuration, pointed at the tests' own fontconfig file: the
-// generic families resolve through its aliases, and an unknown family
-// through the default family, serif.
-TEST(FontDatabase, SystemConfigurationHonoursFontconfigFile) {
-    const char* old = std::getenv("FONTCONFIG_FILE");
-    const std::string saved = old ? old : "";
-    ::setenv("FONTCONFIG_FILE", CASTELJAU_TESTS "/text/fonts.conf", 1);
-    FontDatabase db;
-    if (old)
-        ::setenv("FONTCONFIG_FILE", saved.c_str(), 1);
-    else
-        ::unsetenv("FONTCONFIG_FILE");
-    EXPECT_EQ(file_name(db.match(query("serif"))), "NotoSerif-Regular.ttf");
-    EXPECT_EQ(file_name(db.match(query("sans-serif", 700))), "NotoSans-Bold.ttf");
-    EXPECT_EQ(file_name(db.match(query("monospace"))), "NotoSansMono-Regular.ttf");
-    EXPECT_EQ(file_name(db.match(query("system-ui"))), "NotoSans-Regular.ttf");
-    EXPECT_EQ(file_name(db.match(query("No Such Font"))), "NotoSans-Regular.ttf");
-    EXPECT_EQ(file_name(db.match(query("DejaVu Sans"))), "DejaVuSans.ttf");
-}
-
-// A character's fallback is a font that has it; none when no font has it.
-TEST(FontDatabase, FallbackFindsAFontWithTheCharacter) {
-    FontDatabase& db = test_fonts();
-    for (const char32_t c : {U'\u05D0', U'\u0928', U'\u0E2A', U'\u0633', U'A'}) {
-        const auto face = db.fallback(query("DejaVu Serif"), c);
-        ASSERT_TRUE(face) << "U+" << std::hex << unsigned(c);
-        const auto font = db.font(*face);
-        ASSERT_TRUE(font) << face->file;
-        EXPECT_NE(font->glyph_index(c), 0u) << "U+" << std::hex << unsigned(c) << " " << face->file;
-    }
-    // Latin from the family itself.
-    EXPECT_EQ(file_name(db.fallback(query("DejaVu Serif"), U'A')), "DejaVuSerif.ttf");
-    EXPECT_FALSE(db.fallback(query("DejaVu Serif"), U'\U0010FFFD'));
-}
-
-// A face and variation is loaded once and shared; another variation is
-// another font.
-TEST(FontDatabase, FontsAreSharedPerFaceAndVariation) {
-    FontDatabase& db = test_fonts();
-    const auto face = db.match(query("DejaVu Sans"));
-    ASSERT_TRUE(face);
-    const auto a = db.font(*face), b = db.font(*face);
-    ASSERT_TRUE(a);
-    EXPECT_EQ(a.get(), b.get());
-    const FontVariation bold{{'w', 'g', 'h', 't'}, 700};
-    const auto c = db.font(*face, {bold}), d = db.font(*face, {bold});
-    ASSERT_TRUE(c);
-    EXPECT_EQ(c.get(), d.get());
-    EXPECT_NE(a.get(), c.get());
-    // A file that is not a font gives null, and matching does not offer it.
-    EXPECT_FALSE(db.font({"/nonexistent/font.ttf", 0}));
 }
 
 // -------------------------------------------------------------- arc length
@@ -902,4 +528,4 @@ TEST(PathMeasure, PlacesOnACircle) {
 }
 
 } // namespace
-} // namespace casteljau
+} // namespace casteljau::text_test

@@ -17,18 +17,22 @@
 
 namespace casteljau {
 
+/// Lengths along a path, flattened once (see above).
 class PathMeasure {
   public:
+    /// Flattens `path` within `tolerance`, in its own units (> 0).
     PathMeasure(const Path& path, double tolerance);
+    /// The length of all its subpaths together.
     double length() const { return total_; }
     /// Whether the path is a single closed subpath.
     bool closed() const { return closed_; }
-    /// The point at `distance` from the start and the unit tangent there;
-    /// nullopt outside [0, length()] or on an empty path.
+    /// A point on the path and its unit tangent.
     struct Place {
         Point point;
         Vec2 tangent;
     };
+    /// The point at `distance` from the start and the unit tangent there;
+    /// nullopt outside [0, length()] or on an empty path.
     std::optional<Place> at(double distance) const;
 
   private:

@@ -30,6 +30,7 @@
 #include "casteljau/svg/css.h"
 
 #include "casteljau/svg/detail/css_selector.h"
+#include "casteljau/text/utf8.h"
 
 #include <algorithm>
 #include <limits>
@@ -65,24 +66,6 @@ bool is_name_start(int c) {
 bool is_name(int c) { return is_name_start(c) || is_digit(c) || c == '-'; }
 bool is_non_printable(int c) {
     return (c >= 0 && c <= 8) || c == 0x0b || (c >= 0x0e && c <= 0x1f) || c == 0x7f;
-}
-
-void append_utf8(std::string& out, std::uint32_t cp) {
-    if (cp < 0x80) {
-        out += char(cp);
-    } else if (cp < 0x800) {
-        out += char(0xc0 | (cp >> 6));
-        out += char(0x80 | (cp & 0x3f));
-    } else if (cp < 0x10000) {
-        out += char(0xe0 | (cp >> 12));
-        out += char(0x80 | ((cp >> 6) & 0x3f));
-        out += char(0x80 | (cp & 0x3f));
-    } else {
-        out += char(0xf0 | (cp >> 18));
-        out += char(0x80 | ((cp >> 12) & 0x3f));
-        out += char(0x80 | ((cp >> 6) & 0x3f));
-        out += char(0x80 | (cp & 0x3f));
-    }
 }
 
 bool ascii_iequals(std::string_view a, std::string_view b) {

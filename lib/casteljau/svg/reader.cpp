@@ -274,12 +274,7 @@ bool Reader::conditions_hold(const pugi::xml_node& n) const {
 // nest of uses that would expand past it stops there (billion laughs).
 void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, const Affine& ctm,
                      Group& out, int depth) {
-    if (++elements_ > options_.max_elements)
-        fail(n, "more than " + std::to_string(options_.max_elements) +
-                    " elements, <use> instances included (the limit)");
-    if (depth > options_.max_depth)
-        fail(n, "elements nested deeper than " + std::to_string(options_.max_depth) +
-                    ", <use> instances included (the limit)");
+    count_element(n, depth);
     const std::string_view name = n.name();
     if (name.find(':') != name.npos || silently_skipped(name)) return; // foreign namespaces
     const bool group = name == "g" || name == "a";

@@ -107,8 +107,9 @@ void Reader::text_characters(const pugi::xml_node& at, std::string_view utf8, st
         r.after_space = c == ' ' && !preserve;
         if (r.content.chars.size() >= r.limit) {
             if (!r.over)
-                warn(at, "text past the limit of " + std::to_string(options_.max_text_characters) +
-                             " characters; not drawn");
+                problem(at, "text past the limit of " +
+                                std::to_string(options_.max_text_characters) +
+                                " characters; not drawn");
             r.over = true;
             return;
         }
@@ -185,12 +186,7 @@ void Reader::text_children(const pugi::xml_node& e, TextReading& r, int depth) {
             continue;
         }
         if (c.type() != pugi::node_element) continue;
-        if (++elements_ > options_.max_elements)
-            fail(c, "more than " + std::to_string(options_.max_elements) +
-                        " elements, <use> instances included (the limit)");
-        if (depth > options_.max_depth)
-            fail(c, "elements nested deeper than " + std::to_string(options_.max_depth) +
-                        ", <use> instances included (the limit)");
+        count_element(c, depth);
         const std::string_view name = c.name();
         if (name == "tspan" || name == "a") {
             if (!text_span(c, r, self)) continue;
@@ -287,7 +283,12 @@ void Reader::text(const pugi::xml_node& n, const StyleState& style, const Elemen
         chars.pop_back();
     text_characters_ += chars.size();
     if (chars.empty()) return;
-    draw_text(r.content, layout_text(fonts(), r.content), m, props, out);
+    const TextLayout layout = layout_text(fonts(), r.content);
+    if (std::any_of(layout.glyphs.begin(), layout.glyphs.end(),
+                    [](const PlacedGlyph& g) { return !g.glyph.font; }))
+        warn(n, "no font draws some of this text (none installed, or none that reads); "
+                "those characters are not drawn");
+    draw_text(r.content, layout, m, props, out);
 }
 
 namespace {

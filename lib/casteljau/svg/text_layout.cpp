@@ -25,7 +25,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <optional>
 
 namespace casteljau::svg_detail {
 
@@ -71,6 +73,7 @@ class Layouter {
     Layouter(FontDatabase& fonts, const TextContent& c) : fonts_(fonts), c_(c) {
         for (const TextSpan& s : c.spans) styles_.push_back(text_style(s.style));
         primary_.resize(c.spans.size());
+        measures_.resize(c.paths.size());
         for (std::size_t i = 0; i < c.spans.size(); ++i)
             if (const auto face = fonts.match(styles_[i].font))
                 primary_[i] = fonts.font(*face, styles_[i].variations);
@@ -141,6 +144,9 @@ class Layouter {
     std::vector<Cluster> clusters_of(const std::vector<LaidGlyph>& glyphs, bool vert) const;
     void apply_text_lengths(std::vector<Cluster>& cl) const;
     void chunk(std::size_t b, std::size_t e);
+    void on_path(const std::vector<LaidGlyph>& glyphs, const std::vector<Cluster>& cl,
+                 std::size_t path);
+    void decorate(const DecorationPiece& d);
     void place(const std::vector<LaidGlyph>& glyphs, const Cluster& c, const Affine& at);
 
     FontDatabase& fonts_;
@@ -149,6 +155,9 @@ class Layouter {
     std::vector<std::shared_ptr<const Font>> primary_;
     Point pen_;      // where the next chunk starts when it gives no x or y
     Point path_pen_; // the same along a textPath: x a distance, y an offset
+    std::vector<std::optional<PathMeasure>> measures_; // each textPath's, once needed
+    // The last piece of each decoration line (owner, line) in out_, in this chunk.
+    std::map<std::pair<std::uint32_t, int>, std::size_t> last_piece_;
     TextLayout out_;
 };
 
@@ -250,6 +259,7 @@ void Layouter::apply_text_lengths(std::vector<Cluster>& cl) const {
 }
 
 void Layouter::chunk(std::size_t b, std::size_t e) {
+    last_piece_.clear();
     const bool vert = vertical(b);
     std::u32string text;
     std::vector<std::uint32_t> style_of;
@@ -296,8 +306,22 @@ void Layouter::chunk(std::size_t b, std::size_t e) {
         for (const Cluster& c : cl) place(glyphs, c, Affine::translate(c.pen.to_vec()));
         return;
     }
-    const TextPathRef& ref = c_.paths[std::size_t(path)];
-    const PathMeasure measure(ref.path, 0.01);
+    on_path(glyphs, cl, std::size_t(path));
+}
+
+// Each cluster where its middle falls on the path, turned to the path's
+// direction there; not drawn when its middle falls off the path.
+void Layouter::on_path(const std::vector<LaidGlyph>& glyphs, const std::vector<Cluster>& cl,
+                       std::size_t path) {
+    const TextPathRef& ref = c_.paths[path];
+    if (!measures_[path]) {
+        // Within 1e-5 of the path's size: positions far finer than a pixel
+        // at any scale the path is seen at, in a bounded number of chords.
+        const Rect box = ref.path.control_bounds();
+        const double size = box.is_empty() ? 0 : std::hypot(box.width(), box.height());
+        measures_[path].emplace(ref.path, size > 0 ? size * 1e-5 : 1);
+    }
+    const PathMeasure& measure = *measures_[path];
     const double offset =
         ref.start_percent ? ref.start_offset * measure.length() : ref.start_offset;
     for (const Cluster& c : cl) {
@@ -345,15 +369,36 @@ void Layouter::place(const std::vector<LaidGlyph>& glyphs, const Cluster& c, con
         const FontMetrics mo = primary_[owner] ? primary_[owner]->metrics() : FontMetrics{};
         const double width = c.advance * c.stretch + c.extra;
         if (d.underline)
-            out_.decorations.push_back(
-                {owner, 0, width, -mo.underline_position * ko, mo.underline_thickness * ko, frame});
+            decorate({owner, 0, width, -mo.underline_position * ko, mo.underline_thickness * ko,
+                      frame});
         if (d.overline)
-            out_.decorations.push_back(
-                {owner, 1, width, -mo.ascender * ko, mo.underline_thickness * ko, frame});
+            decorate({owner, 1, width, -mo.ascender * ko, mo.underline_thickness * ko, frame});
         if (d.line_through)
-            out_.decorations.push_back(
-                {owner, 2, width, -mo.strikeout_position * ko, mo.strikeout_thickness * ko, frame});
+            decorate({owner, 2, width, -mo.strikeout_position * ko, mo.strikeout_thickness * ko,
+                      frame});
     }
+}
+
+// A piece that continues the last one of its decoration line (the same
+// direction, height and thickness, starting where that one ends) extends
+// it: a line under n characters is one rectangle, not n.
+void Layouter::decorate(const DecorationPiece& d) {
+    const std::pair<std::uint32_t, int> key{d.owner, d.line};
+    if (const auto it = last_piece_.find(key); it != last_piece_.end()) {
+        DecorationPiece& last = out_.decorations[it->second];
+        const Affine& a = last.transform;
+        const Affine& b = d.transform;
+        const Point end = a * Point{last.width, 0};
+        const Point start = b * Point{0, 0};
+        const bool same_frame = a.a == b.a && a.b == b.b && a.c == b.c && a.d == b.d;
+        if (same_frame && last.y == d.y && last.thickness == d.thickness &&
+            distance(end, start) <= 1e-9 * (1 + std::abs(end.x) + std::abs(end.y))) {
+            last.width += d.width;
+            return;
+        }
+    }
+    last_piece_[key] = out_.decorations.size();
+    out_.decorations.push_back(d);
 }
 
 } // namespace

@@ -49,14 +49,16 @@ enum class UnicodeBidi { Normal, Embed, Isolate, BidiOverride, IsolateOverride, 
 
 /// baseline-shift: baseline (none), sub, super, or a length in px.
 struct BaselineShift {
-    enum class Kind { Baseline, Sub, Super, Length } kind = Kind::Baseline;
+    /// Which of the four it is.
+    enum class Kind { Baseline, Sub, Super, Length };
+    Kind kind = Kind::Baseline; ///< which of the four
     double px = 0; ///< for Length; a percentage is of the element's font size
 };
 
 /// text-decoration lines (CSS Text Decoration 3, 2.1).
 struct TextDecorationLines {
     bool underline = false, overline = false, line_through = false;
-    bool any() const { return underline || overline || line_through; }
+    bool any() const { return underline || overline || line_through; } ///< at least one line
 };
 
 /// The inherited text properties, computed.

@@ -18,7 +18,7 @@ std::vector<std::uint8_t> bidi_levels(std::u32string_view text, bool rtl);
 struct BidiRun {
     std::size_t begin = 0, end = 0;
     std::uint8_t level = 0;
-    bool rtl() const { return level & 1; }
+    bool rtl() const { return level & 1; } ///< an odd level: right to left
 };
 
 /// The runs of `levels` in visual order, left to right (UAX #9, L2).

@@ -30,7 +30,7 @@ struct FontFace;
 struct FontVariation {
     char tag[4] = {' ', ' ', ' ', ' '};
     double value = 0;
-    bool operator==(const FontVariation&) const = default;
+    bool operator==(const FontVariation&) const = default; ///< same tag and value
 };
 
 /// Vertical metrics in font units, y up (descender negative).
@@ -42,6 +42,7 @@ struct FontMetrics {
     double strikeout_position = 250, strikeout_thickness = 50;  ///< position: the line's centre
 };
 
+/// A font file's face, loaded: metrics, glyph lookup and cached outlines.
 class Font {
   public:
     /// Loads face `index` of `file`; null, with `error` set, when it does not
@@ -53,7 +54,9 @@ class Font {
     Font(const Font&) = delete;
     Font& operator=(const Font&) = delete;
 
+    /// Its vertical metrics, font units.
     const FontMetrics& metrics() const { return metrics_; }
+    /// Its family name, as the font gives it.
     const std::string& family() const { return family_; }
     /// The glyph for a character; 0 (the missing glyph) when there is none.
     std::uint32_t glyph_index(char32_t c) const;
@@ -69,6 +72,7 @@ class Font {
     /// units, y up: what sits on the line of upright vertical text (the VORG
     /// table, else half the advance across and the ascender up).
     Vec2 vertical_origin(std::uint32_t glyph) const;
+    /// How many glyphs it has.
     std::size_t glyph_count() const { return glyph_count_; }
     /// Whether the font is variable along the design axis `tag` ("wght").
     bool has_axis(const char tag[4]) const;

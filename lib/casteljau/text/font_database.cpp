@@ -22,10 +22,34 @@ struct FontDatabase::Impl {
     FcConfig* config = nullptr;
     using Key = std::tuple<std::vector<std::string>, int, int, int, char32_t>;
     std::map<Key, std::optional<FontFace>> matches;
+    // fontconfig's answers per family, weight, style and stretch: its best
+    // match (null for none), and all its fonts sorted by closeness, which
+    // each character's fallback then scans (its charsets are cheap to test;
+    // the sort is what costs).
+    using FamilyKey = std::tuple<std::string, int, int, int>;
+    std::map<FamilyKey, FcPattern*> best;
+    std::map<FamilyKey, FcFontSet*> sorted;
     std::map<std::pair<std::pair<std::string, int>, std::vector<std::tuple<std::string, double>>>,
              std::shared_ptr<const Font>>
         fonts;
+
+    FcPattern* best_of(const std::string& family, const FontQuery& q);
+    FcFontSet* sorted_of(const std::string& family, const FontQuery& q);
+    std::optional<FontFace> match_family(const std::string& family, const FontQuery& q,
+                                         std::optional<char32_t> c);
+    std::optional<FontFace> closest(const std::string& family, const FontQuery& q,
+                                    std::optional<char32_t> c);
+    void forget() {
+        matches.clear();
+        for (auto& [k, p] : best)
+            if (p) FcPatternDestroy(p);
+        for (auto& [k, set] : sorted)
+            if (set) FcFontSetDestroy(set);
+        best.clear();
+        sorted.clear();
+    }
     ~Impl() {
+        forget();
         if (config) FcConfigDestroy(config);
     }
 };
@@ -89,39 +113,48 @@ FcPattern* pattern_of(FcConfig* config, const std::string& family, const FontQue
     return p;
 }
 
+} // namespace
+
+FcPattern* FontDatabase::Impl::best_of(const std::string& family, const FontQuery& q) {
+    const FamilyKey key{family, q.weight, int(q.style), q.stretch};
+    if (const auto it = best.find(key); it != best.end()) return it->second;
+    FcPattern* p = pattern_of(config, family, q);
+    FcResult result;
+    FcPattern* m = FcFontMatch(config, p, &result);
+    FcPatternDestroy(p);
+    return best[key] = m;
+}
+
+FcFontSet* FontDatabase::Impl::sorted_of(const std::string& family, const FontQuery& q) {
+    const FamilyKey key{family, q.weight, int(q.style), q.stretch};
+    if (const auto it = sorted.find(key); it != sorted.end()) return it->second;
+    FcPattern* p = pattern_of(config, family, q);
+    FcResult result;
+    FcFontSet* set = FcFontSort(config, p, FcFalse, nullptr, &result);
+    FcPatternDestroy(p);
+    return sorted[key] = set;
+}
+
 // The best font of `family` for the query, when it is that family (or the
 // family is generic) and has `c`, when given.
-std::optional<FontFace> match_family(FcConfig* config, const std::string& family,
-                                     const FontQuery& q, std::optional<char32_t> c) {
-    FcPattern* p = pattern_of(config, family, q);
-    std::optional<FontFace> face;
-    FcResult result;
-    if (FcPattern* m = FcFontMatch(config, p, &result)) {
-        if ((generic(family) || has_family(m, family)) && (!c || has_char(m, *c)))
-            face = face_of(m);
-        FcPatternDestroy(m);
-    }
-    FcPatternDestroy(p);
-    return face;
+std::optional<FontFace> FontDatabase::Impl::match_family(const std::string& family,
+                                                         const FontQuery& q,
+                                                         std::optional<char32_t> c) {
+    FcPattern* m = best_of(family, q);
+    if (m && (generic(family) || has_family(m, family)) && (!c || has_char(m, *c)))
+        return face_of(m);
+    return std::nullopt;
 }
 
 // The first font, in fontconfig's order of closeness to the query, that
 // has `c`; without `c`, the closest font of all.
-std::optional<FontFace> closest(FcConfig* config, const std::string& family, const FontQuery& q,
-                                std::optional<char32_t> c) {
-    FcPattern* p = pattern_of(config, family, q);
-    std::optional<FontFace> face;
-    FcResult result;
-    if (FcFontSet* set = FcFontSort(config, p, FcFalse, nullptr, &result)) {
-        for (int i = 0; i < set->nfont && !face; ++i)
-            if (!c || has_char(set->fonts[i], *c)) face = face_of(set->fonts[i]);
-        FcFontSetDestroy(set);
-    }
-    FcPatternDestroy(p);
-    return face;
+std::optional<FontFace> FontDatabase::Impl::closest(const std::string& family, const FontQuery& q,
+                                                    std::optional<char32_t> c) {
+    if (FcFontSet* set = sorted_of(family, q))
+        for (int i = 0; i < set->nfont; ++i)
+            if (!c || has_char(set->fonts[i], *c)) return face_of(set->fonts[i]);
+    return std::nullopt;
 }
-
-} // namespace
 
 FontDatabase::FontDatabase() : FontDatabase(true) {}
 
@@ -153,19 +186,19 @@ bool FontDatabase::add_font_dir(const std::string& dir) {
     std::error_code e;
     if (!std::filesystem::is_directory(dir, e)) return false; // fontconfig would say yes
     std::lock_guard lock(mutex_);
-    impl_->matches.clear();
+    impl_->forget();
     return FcConfigAppFontAddDir(impl_->config, reinterpret_cast<const FcChar8*>(dir.c_str()));
 }
 
 bool FontDatabase::add_font_file(const std::string& file) {
     std::lock_guard lock(mutex_);
-    impl_->matches.clear();
+    impl_->forget();
     return FcConfigAppFontAddFile(impl_->config, reinterpret_cast<const FcChar8*>(file.c_str()));
 }
 
 void FontDatabase::set_default_family(std::string family) {
     std::lock_guard lock(mutex_);
-    impl_->matches.clear();
+    impl_->forget();
     default_family_ = std::move(family);
 }
 
@@ -181,10 +214,9 @@ std::optional<FontFace> FontDatabase::find(const FontQuery& q, std::optional<cha
     if (const auto it = impl_->matches.find(key); it != impl_->matches.end()) return it->second;
     std::optional<FontFace> face;
     for (const std::string& family : q.families)
-        if ((face = match_family(impl_->config, family, q, c))) break;
-    if (!face) face = match_family(impl_->config, default_family_, q, c);
-    if (!face)
-        face = closest(impl_->config, q.families.empty() ? default_family_ : q.families[0], q, c);
+        if ((face = impl_->match_family(family, q, c))) break;
+    if (!face) face = impl_->match_family(default_family_, q, c);
+    if (!face) face = impl_->closest(q.families.empty() ? default_family_ : q.families[0], q, c);
     impl_->matches.emplace(key, face);
     return face;
 }

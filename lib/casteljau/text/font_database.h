@@ -40,7 +40,7 @@ struct FontQuery {
 struct FontFace {
     std::string file;
     int index = 0;
-    bool operator==(const FontFace&) const = default;
+    bool operator==(const FontFace&) const = default; ///< same file and face
 };
 
 /// Finds fonts and keeps them loaded.
@@ -63,6 +63,7 @@ class FontDatabase {
     /// ("sans-serif" unless set: what fontconfig itself falls back to, as
     /// librsvg and resvg do; browsers take serif).
     void set_default_family(std::string family);
+    /// The family set_default_family gave.
     const std::string& default_family() const { return default_family_; }
 
     /// The best face for a query; nullopt only when the database has no font.

@@ -52,9 +52,14 @@ std::shared_ptr<const Font> load(FontDatabase& db, const FontFace& face, const T
 std::vector<std::shared_ptr<const Font>> fonts_of(FontDatabase& db, std::u32string_view text,
                                                   const std::vector<TextStyle>& styles,
                                                   const std::vector<std::uint32_t>& style_of) {
+    // Only the styles the text uses: a caller may hand all of a document's.
     std::vector<std::shared_ptr<const Font>> primary(styles.size());
-    for (std::size_t s = 0; s < styles.size(); ++s)
+    std::vector<bool> matched(styles.size());
+    for (const std::uint32_t s : style_of) {
+        if (matched[s]) continue;
+        matched[s] = true;
         if (const auto face = db.match(styles[s].font)) primary[s] = load(db, *face, styles[s]);
+    }
     std::map<std::pair<std::uint32_t, char32_t>, std::shared_ptr<const Font>> fallbacks;
     std::vector<std::shared_ptr<const Font>> fonts(text.size());
     for (std::size_t i = 0; i < text.size(); ++i) {

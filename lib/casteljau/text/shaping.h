@@ -25,12 +25,14 @@ struct FontFeature {
     bool on = true;
 };
 
+/// How to shape a run.
 struct ShapeOptions {
     TextDirection direction = TextDirection::Ltr;
     std::string language; ///< BCP 47, "" for the default
     std::vector<FontFeature> features;
 };
 
+/// One glyph of a shaped run, in font units (y up).
 struct ShapedGlyph {
     std::uint32_t glyph = 0;
     std::uint32_t cluster = 0; ///< index in the text of its cluster's first character

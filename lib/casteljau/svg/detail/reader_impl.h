@@ -121,6 +121,16 @@ class Reader {
                                    const LengthContext& ctx);
     std::optional<ViewBox> view_box(const pugi::xml_node& n);
     Affine view_map(const pugi::xml_node& n, const ViewBox& box, double w, double h);
+    // Counts an element against the element limit and checks how deep it
+    // is; over either limit, the read ends.
+    void count_element(const pugi::xml_node& n, int depth) {
+        if (++elements_ > options_.max_elements)
+            fail(n, "more than " + std::to_string(options_.max_elements) +
+                        " elements, <use> instances included (the limit)");
+        if (depth > options_.max_depth)
+            fail(n, "elements nested deeper than " + std::to_string(options_.max_depth) +
+                        ", <use> instances included (the limit)");
+    }
     void check_length_limit(const pugi::xml_node& n, const pugi::xml_attribute& a) const {
         if (const std::size_t len = std::strlen(a.value()); len > options_.max_attribute_bytes)
             fail(n, std::string("attribute ") + a.name() + " is " + std::to_string(len) +
