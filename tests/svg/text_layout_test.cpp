@@ -216,6 +216,19 @@ TEST(TextBaseline, BaselineShiftRaisesAndLowersATspan) {
     EXPECT_GT(dy("sub"), 1) << "sub lowers";
 }
 
+// baseline-shift is not inherited, but `inherit` takes the parent's own
+// value: text under a raised group, asking for it, is raised as much as
+// text that sets it itself (resvg's a-baseline-shift-016).
+TEST(TextBaseline, BaselineShiftInheritTakesTheParentsOwnValue) {
+    const Rect own = bounds_of(
+        R"(<text x="10" y="100" font-size="40" baseline-shift="super">H</text>)");
+    const Rect inherited = bounds_of(
+        R"(<g baseline-shift="super"><text x="10" y="100" font-size="40" baseline-shift="inherit">H</text></g>)");
+    const Rect plain = bounds_of(R"(<text x="10" y="100" font-size="40">H</text>)");
+    EXPECT_LT(own.y0, plain.y0 - 1);
+    EXPECT_NEAR(inherited.y0, own.y0, 1e-9);
+}
+
 TEST(TextBaseline, NestedShiftsAddUp) {
     const SvgResult r =
         read(text(R"(x="10" y="100" font-size="40")",

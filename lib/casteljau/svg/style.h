@@ -84,6 +84,9 @@ struct StyleState {
     /// (an image's nearest pixel, not a bilinear blend).
     bool smooth_images = true;
     TextState text; ///< the inherited text properties (svg/text_properties.h)
+    /// The element's own values of the text properties that are not
+    /// inherited: what `inherit` takes for them in its children.
+    TextProps own_text;
 };
 
 /// Not inherited: reset for every element.

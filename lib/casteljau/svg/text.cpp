@@ -135,6 +135,7 @@ bool Reader::text_span(const pugi::xml_node& e, TextReading& r, std::uint32_t pa
     ElementProps props;
     apply_declarations(e, up, span.style, nullptr, context(up));
     apply_declarations(e, up, span.style, &props, context(span.style));
+    span.style.own_text = props.text;
     if (props.display_none || !conditions_hold(e)) return false;
     const std::string_view space = e.attribute("xml:space").value();
     if (space == "preserve") span.style.text.preserve_spaces = true;

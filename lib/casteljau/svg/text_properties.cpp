@@ -217,21 +217,22 @@ bool text_rendering(std::string_view v) {
 }
 
 std::optional<std::string> apply_element_property(std::string_view name, std::string_view value,
-                                                  ElementProps& props, const LengthContext& ctx) {
+                                                  const TextProps& p, ElementProps& props,
+                                                  const LengthContext& ctx) {
     const Setter set{name, value};
     const TextProps initial;
     TextProps& t = props.text;
     if (name == "alignment-baseline")
-        return set(t.alignment_baseline, initial.alignment_baseline, initial.alignment_baseline,
+        return set(t.alignment_baseline, p.alignment_baseline, initial.alignment_baseline,
                    parse_alignment_baseline(value), "a baseline");
     if (name == "baseline-shift")
-        return set(t.baseline_shift, initial.baseline_shift, initial.baseline_shift,
+        return set(t.baseline_shift, p.baseline_shift, initial.baseline_shift,
                    parse_baseline_shift(value, ctx), "baseline, sub, super or a length");
     if (name == "unicode-bidi")
-        return set(t.unicode_bidi, initial.unicode_bidi, initial.unicode_bidi,
+        return set(t.unicode_bidi, p.unicode_bidi, initial.unicode_bidi,
                    parse_unicode_bidi(value), "a unicode-bidi value");
     if (name == "text-decoration" || name == "text-decoration-line")
-        return set(t.decoration, initial.decoration, initial.decoration,
+        return set(t.decoration, p.decoration, initial.decoration,
                    parse_decoration(value, name == "text-decoration", ctx),
                    "none or underline, overline and line-through");
     if (name == "text-rendering")
@@ -250,7 +251,7 @@ std::optional<std::string> apply_text_property(std::string_view name, std::strin
     value = trim(value);
     if (auto e = svg_detail::apply_font_property(name, value, parent, style, ctx)) return e;
     if (auto e = apply_layout_property(name, value, parent, style, ctx)) return e;
-    return apply_element_property(name, value, props, ctx);
+    return apply_element_property(name, value, parent.own_text, props, ctx);
 }
 
 } // namespace casteljau

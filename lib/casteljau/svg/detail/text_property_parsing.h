@@ -80,8 +80,8 @@ inline Wide css_wide(std::string_view value) {
 
 // Applies one value the way apply_property does: a CSS-wide keyword takes
 // `inherited` or `initial`, a value that parses is taken, anything else is
-// an error. For a property that is not inherited, `inherited` is its
-// initial value: the parent's is not at hand in TextProps.
+// an error. For a property that is not inherited, `inherited` is the
+// parent's own value (StyleState::own_text).
 struct Setter {
     std::string_view name, value;
 
