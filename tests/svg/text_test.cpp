@@ -11,7 +11,10 @@
 // Noto, in a database of their own: text_test_support.h).
 #include "text_test_support.h"
 
+#include <cmath>
 #include <cstddef>
+#include <filesystem>
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -374,5 +377,38 @@ TEST(TextLimits, CharactersPastTheLimitAreNotDrawn) {
     EXPECT_EQ(t[1]->path.subpaths().size(), 4 * per);
     EXPECT_EQ(two.warnings.size(), 1u);
 }
+
+// The language (xml:lang, lang, inherited from any ancestor) chooses the
+// font's local forms: Noto Sans CJK draws 直 differently in Japanese and
+// in Simplified Chinese (its locl feature).
+TEST(TextLanguage, XmlLangChoosesLocalForms) {
+    const std::string cjk = "/usr/share/fonts/opentype/noto";
+    if (!std::filesystem::is_directory(cjk)) GTEST_SKIP() << "fonts-noto-cjk is not installed";
+    static const std::unique_ptr<FontDatabase> db = [&] {
+        auto d = FontDatabase::empty();
+        d->add_font_dir(cjk);
+        return d;
+    }();
+    const auto glyph_box = [&](const std::string& body) {
+        SvgOptions o;
+        o.fonts = db.get();
+        const SvgResult r = parse_svg(
+            "<svg xmlns='http://www.w3.org/2000/svg' width='200' height='200'>" + body + "</svg>",
+            "lang.svg", o);
+        EXPECT_TRUE(r.scene) << r.error;
+        return bounds(shapes(r));
+    };
+    const char* text =
+        R"(<text x="10" y="100" font-family="Noto Sans CJK JP" font-size="80">直</text>)";
+    const Rect ja = glyph_box(std::string(R"(<g xml:lang="ja">)") + text + "</g>");
+    const Rect zh = glyph_box(std::string(R"(<g lang="zh-Hans">)") + text + "</g>");
+    const Rect none = glyph_box(text);
+    EXPECT_GT(std::abs(ja.x0 - zh.x0) + std::abs(ja.y0 - zh.y0) + std::abs(ja.x1 - zh.x1) +
+                  std::abs(ja.y1 - zh.y1),
+              0.5)
+        << "ja " << str(ja) << ", zh " << str(zh);
+    EXPECT_NEAR(none.x1 - none.x0, ja.x1 - ja.x0, 1e-9) << "the font's own language is Japanese";
+}
+
 } // namespace
 } // namespace casteljau::svg_text_test

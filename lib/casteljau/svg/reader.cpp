@@ -293,6 +293,7 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
     apply_declarations(n, parent_style, style, nullptr, context(parent_style));
     apply_declarations(n, parent_style, style, &props, context(style));
     style.own_text = props.text; // what its children's inherit takes
+    read_language(n, style.text);
     if (props.display_none) return;
     if (clip_mode_) { // in a clip path, only the clip-path of its children counts
         props.opacity = 1;

@@ -83,6 +83,31 @@ std::string text_content(const pugi::xml_node& n) {
     return std::move(walker.out);
 }
 
+// A baseline-shift in px, up: sub and super as 0.2 and 0.4 em, as librsvg
+// and resvg take them (fonts' own subscript offsets vary too much to agree).
+double shift_px(const BaselineShift& bs, double font_size) {
+    switch (bs.kind) {
+    case BaselineShift::Kind::Sub:
+        return -0.2 * font_size;
+    case BaselineShift::Kind::Super:
+        return 0.4 * font_size;
+    case BaselineShift::Kind::Length:
+        return bs.px;
+    case BaselineShift::Kind::Baseline:
+        break;
+    }
+    return 0;
+}
+
+// xml:space (SVG 1.1, 10.15): preserve or default, as white-space does;
+// and the element's language, xml:lang or lang (SVG 2, 2.4.2).
+void xml_space(const pugi::xml_node& e, StyleState& style) {
+    const std::string_view space = e.attribute("xml:space").value();
+    if (space == "preserve") style.text.preserve_spaces = true;
+    if (space == "default") style.text.preserve_spaces = false;
+    read_language(e, style.text);
+}
+
 bool is_collapsible(char32_t c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
 
 } // namespace
@@ -137,16 +162,11 @@ bool Reader::text_span(const pugi::xml_node& e, TextReading& r, std::uint32_t pa
     apply_declarations(e, up, span.style, &props, context(span.style));
     span.style.own_text = props.text;
     if (props.display_none || !conditions_hold(e)) return false;
-    const std::string_view space = e.attribute("xml:space").value();
-    if (space == "preserve") span.style.text.preserve_spaces = true;
-    if (space == "default") span.style.text.preserve_spaces = false;
+    xml_space(e, span.style);
     span.props = props.text;
     const TextSpan& p = r.content.spans[parent];
-    const BaselineShift& bs = props.text.baseline_shift;
-    const double fs = span.style.font_size;
-    span.baseline_shift = p.baseline_shift + (bs.kind == BaselineShift::Kind::Sub     ? -0.2 * fs
-                                              : bs.kind == BaselineShift::Kind::Super ? 0.4 * fs
-                                                                                      : bs.px);
+    span.baseline_shift =
+        p.baseline_shift + shift_px(props.text.baseline_shift, span.style.font_size);
     span.decorations = p.decorations;
     if (props.text.decoration.any())
         span.decorations.push_back(std::uint32_t(r.content.spans.size()));
@@ -265,14 +285,9 @@ void Reader::text(const pugi::xml_node& n, const StyleState& style, const Elemen
     TextSpan root;
     root.node = n;
     root.style = style;
-    const std::string_view space = n.attribute("xml:space").value();
-    if (space == "preserve") root.style.text.preserve_spaces = true;
-    if (space == "default") root.style.text.preserve_spaces = false;
+    xml_space(n, root.style);
     root.props = props.text;
-    const BaselineShift& bs = props.text.baseline_shift;
-    root.baseline_shift = bs.kind == BaselineShift::Kind::Sub     ? -0.2 * style.font_size
-                          : bs.kind == BaselineShift::Kind::Super ? 0.4 * style.font_size
-                                                                  : bs.px;
+    root.baseline_shift = shift_px(props.text.baseline_shift, style.font_size);
     if (props.text.decoration.any()) root.decorations.push_back(0);
     r.content.spans.push_back(std::move(root));
     text_positions(n, r);

@@ -43,6 +43,7 @@ TextStyle text_style(const StyleState& s) {
     if (ts.small_caps) t.features.push_back({{'s', 'm', 'c', 'p'}, true});
     t.letter_spacing = ts.letter_spacing;
     t.word_spacing = ts.word_spacing;
+    t.language = ts.language;
     return t;
 }
 

@@ -83,6 +83,9 @@ struct TextState {
     /// white-space (CSS Text 3, 3): pre, pre-wrap and break-spaces keep
     /// spaces, as xml:space="preserve" does; pre-line collapses them.
     bool preserve_spaces = false;
+    /// The language of xml:lang or lang (BCP 47; inherited as attributes are
+    /// by the language's own rule): HarfBuzz's choice of local forms.
+    std::string language;
 };
 
 /// The text properties that are not inherited.

@@ -50,6 +50,15 @@ inline bool unsupported(std::string_view n) {
     return names.count(n) != 0;
 }
 
+// An element's language, xml:lang or lang (SVG 2, 2.4.2), into the text
+// state its descendants inherit.
+inline void read_language(const pugi::xml_node& n, TextState& text) {
+    if (const pugi::xml_attribute a = n.attribute("xml:lang"))
+        text.language = a.value();
+    else if (const pugi::xml_attribute b = n.attribute("lang"))
+        text.language = b.value();
+}
+
 inline bool is_shape(std::string_view n) {
     return n == "path" || n == "rect" || n == "circle" || n == "ellipse" || n == "line" ||
            n == "polyline" || n == "polygon";
@@ -193,8 +202,8 @@ class Reader {
     // False when a primitive is in error so that the element is not drawn.
     bool read_primitives(const pugi::xml_node& filter, const PrimitiveUnits& u, const Affine& m,
                          Filter& f, int depth);
-    FilterOp image_input(const pugi::xml_node& e, const PrimitiveUnits& u,
-                         const StyleState& style, const Affine& m, Filter& f, int depth);
+    FilterOp image_input(const pugi::xml_node& e, const PrimitiveUnits& u, const StyleState& style,
+                         const Affine& m, Filter& f, int depth);
     Rect subregion(const pugi::xml_node& e, const PrimitiveUnits& u, const FilterPrimitive& p,
                    const FilterGraph& g, const StyleState& style);
     std::optional<FilterOp> filter_op(const pugi::xml_node& p, const PrimitiveUnits& u,
