@@ -4,6 +4,7 @@
 // run_filter accepts must run in bounded time and memory; what it refuses
 // (cycles, missing inputs) must be refused, never crash.
 #include "casteljau/filter/run.h"
+#include "fuzz_input.h"
 #include "fuzz_target.h"
 
 #include <cmath>
@@ -13,21 +14,10 @@ namespace {
 
 using namespace casteljau;
 
-// Reads values from the input, 0 once it runs out.
-struct Bytes {
-    const std::uint8_t* p;
-    std::size_t n;
-    std::uint8_t byte() { return n ? (--n, *p++) : 0; }
-    // A double in a range that reaches hostile values: +-1e-3 .. 1e6, and
-    // now and then a huge or a non-finite one, as a bad reader might pass.
-    double number() {
-        const std::uint8_t k = byte();
-        if (k == 255) return 1e300;
-        if (k == 254) return -1e300;
-        return (byte() - 128) * std::pow(10.0, (k % 10) - 3) / 16;
-    }
-    int input(int i) { return int(byte() % (i + 9)) - 6; } // -6 .. i + 2: standard, earlier, later
-};
+using fuzz::Bytes;
+
+// An input index: -6 .. i + 2, the standard inputs, earlier results and later ones.
+int input(Bytes& b, int i) { return int(b.byte() % (i + 9)) - 6; }
 
 FilterOp op(Bytes& b) {
     switch (b.byte() % 16) {
@@ -115,7 +105,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const int count = b.byte() % 12;
     for (int i = 0; i < count; ++i) {
         FilterPrimitive p{op(b), {}, g.region, bool(b.byte() & 1)};
-        for (int k = b.byte() % 4; k > 0; --k) p.inputs.push_back(b.input(i));
+        for (int k = b.byte() % 4; k > 0; --k) p.inputs.push_back(input(b, i));
         p.subregion = Rect::from_points({b.number(), b.number()}, {b.number(), b.number()});
         g.primitives.push_back(std::move(p));
     }

@@ -14,9 +14,9 @@
 // whose reading leaks in fontconfig 2.14 (LeakSanitizer reports it at exit).
 // Reading and markup escapes are not at stake here (svg_read fuzzes those):
 // the bytes go in escaped where XML would take them as markup.
-#include "casteljau/render/bands.h"
 #include "casteljau/svg/reader.h"
 #include "casteljau/text/layout.h"
+#include "fuzz_input.h"
 #include "fuzz_target.h"
 
 #include <algorithm>
@@ -29,25 +29,7 @@ namespace {
 
 using namespace casteljau;
 
-// Reads values from the input, 0 once it runs out.
-struct Bytes {
-    const std::uint8_t* p;
-    std::size_t n;
-    std::uint8_t byte() { return n ? (--n, *p++) : 0; }
-    // A number: +-1e-3 .. 1e6 mostly, now and then a hostile one.
-    double number() {
-        const std::uint8_t k = byte();
-        if (k == 255) return 1e300;
-        if (k == 254) return -1e300;
-        if (k == 253) return 1e-300;
-        if (k == 252) return std::nan("");
-        return (byte() - 128) * std::pow(10.0, (k % 10) - 3) / 16;
-    }
-    template <std::size_t N>
-    const char* pick(const char* const (&list)[N]) {
-        return list[byte() % N];
-    }
-};
+using fuzz::Bytes;
 
 FontDatabase& fonts() {
     static FontDatabase& db = []() -> FontDatabase& {
@@ -153,7 +135,7 @@ std::string content(std::string_view s) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     FontDatabase& db = fonts(); // before the reader takes FontDatabase::system()
-    Bytes b{data, size};
+    Bytes b{data, size, true};
     const unsigned structure = b.byte();
     const std::string text_attrs = attributes(b);
     const std::string span_attrs = attributes(b);
@@ -190,17 +172,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     svg += "</text></g>\n</svg>\n";
 
     const SvgResult r = parse_svg(svg, "fuzz.svg");
-    if (r.scene) {
-        const Scene& scene = *r.scene;
-        constexpr double kSide = 96;
-        const double s = std::min(1.0, kSide / std::max(scene.width, scene.height));
-        const int w = std::max(1, int(std::ceil(scene.width * s))),
-                  h = std::max(1, int(std::ceil(scene.height * s)));
-        static BandRenderer renderer; // reused, as the CLI reuses it across inputs
-        Canvas canvas;
-        canvas.reset(w, h);
-        renderer.render(scene, Affine::scale(s), canvas, RenderOptions{}, Premul{}, 1);
-    }
+    if (r.scene) fuzz::render_small(*r.scene);
 
     // The same text as one line, through the library's API.
     Bytes c{data, size}; // the first bytes again, read as a style

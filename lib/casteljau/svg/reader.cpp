@@ -383,6 +383,19 @@ std::optional<Shape> Reader::shape(const pugi::xml_node& n, std::string_view nam
     return painted(n, std::move(path), style, m, props);
 }
 
+// A gradient mapped to user space units: objectBoundingBox units resolved
+// against `box`, then the whole map composed with `m`.
+std::shared_ptr<const Gradient> Reader::in_user_space(const Gradient& g, const Rect& box,
+                                                      const Affine& m) {
+    auto moved = std::make_shared<Gradient>(g);
+    Affine to_user = Affine::identity();
+    if (g.object_bounding_box)
+        to_user = Affine::translate(box.min().to_vec()) * Affine::scale(box.width(), box.height());
+    moved->transform = m * to_user * g.transform;
+    moved->object_bounding_box = false;
+    return moved;
+}
+
 Shape Reader::painted(const pugi::xml_node& n, Path path, const StyleState& style, const Affine& m,
                       const ElementProps& props, const Path* box) {
     Shape s;
@@ -401,19 +414,14 @@ Shape Reader::painted(const pugi::xml_node& n, Path path, const StyleState& styl
     // as the renderer would against the shape's own path.
     const auto boxed = [&](std::shared_ptr<const Gradient> g) {
         if (!box || !g || !g->object_bounding_box) return g;
-        const Rect b = box->bounds();
-        auto moved = std::make_shared<Gradient>(*g);
-        moved->transform =
-            Affine::translate(b.min().to_vec()) * Affine::scale(b.width(), b.height()) * g->transform;
-        moved->object_bounding_box = false;
-        return std::shared_ptr<const Gradient>(std::move(moved));
+        return in_user_space(*g, box->bounds(), Affine::identity());
     };
     if (const auto p = paint(n, style.fill, style, of))
         s.fill =
             Fill{p->color, boxed(p->gradient), style.fill_opacity, style.fill_rule, p->pattern};
     if (const auto p = paint(n, style.stroke, style, of); p && style.stroke_geometry.width > 0)
-        s.stroke = Stroke{p->color, boxed(p->gradient), style.stroke_opacity,
-                          style.stroke_geometry, p->pattern};
+        s.stroke = Stroke{p->color, boxed(p->gradient), style.stroke_opacity, style.stroke_geometry,
+                          p->pattern};
     if (props.non_scaling_stroke && s.stroke) to_host_space(s);
     return s;
 }
@@ -428,15 +436,7 @@ void Reader::to_host_space(Shape& s) {
     const Affine m = s.transform;
     const Rect box = s.path.bounds();
     const auto remap = [&](std::shared_ptr<const Gradient>& g) {
-        if (!g) return;
-        auto moved = std::make_shared<Gradient>(*g);
-        Affine to_user = Affine::identity();
-        if (g->object_bounding_box)
-            to_user =
-                Affine::translate(box.min().to_vec()) * Affine::scale(box.width(), box.height());
-        moved->transform = m * to_user * g->transform;
-        moved->object_bounding_box = false;
-        g = std::move(moved);
+        if (g) g = in_user_space(*g, box, m);
     };
     if (s.fill) remap(s.fill->gradient);
     remap(s.stroke->gradient);

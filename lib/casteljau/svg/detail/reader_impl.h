@@ -230,6 +230,8 @@ class Reader {
     pugi::xml_node by_id(const std::string& id);
     std::optional<Shape> shape(const pugi::xml_node& n, std::string_view name,
                                const StyleState& style, const Affine& m, const ElementProps& props);
+    static std::shared_ptr<const Gradient> in_user_space(const Gradient& g, const Rect& box,
+                                                         const Affine& m);
     // A path painted as `n`'s style says; `box` is what objectBoundingBox
     // paints refer to (the path itself when null).
     Shape painted(const pugi::xml_node& n, Path path, const StyleState& style, const Affine& m,
