@@ -96,7 +96,7 @@ Outcome render_one(const RenderArgs& a, const std::string& input, const std::str
     RenderStats stats;
     for (int i = 0; i < a.repeat; ++i) {
         const auto f0 = Clock::now();
-        canvas.reset(w, h);
+        canvas.resize(w, h); // the renderer clears each band to the background
         stats = renderer.render(scene, Affine::scale(s), canvas, options, background, threads(a));
         frame_ms.push_back(ms(Clock::now() - f0));
         flatten_ms.push_back(stats.flatten_ms);

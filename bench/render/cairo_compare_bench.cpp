@@ -12,12 +12,14 @@
 // 1/255: a check that both drew the same thing at comparable quality.
 //
 // Usage: cairo_compare_bench [benchmark flags] [SCENE.svg ...]
-// The seeded scenes of bench_scenes.h always run; each SVG argument is added.
+// The seeded scenes of bench_scenes.h always run; each SVG argument is added,
+// scaled so that its longer side is 1024 px (the tiger at 1024 px).
 #include "bench_scenes.h"
 #include "cairo_scene.h"
 #include "casteljau/render/bands.h"
 #include "casteljau/svg/reader.h"
 
+#include <algorithm>
 #include <benchmark/benchmark.h>
 #include <chrono>
 #include <cmath>
@@ -56,8 +58,8 @@ double mean_difference(const Canvas& ours, cairo_surface_t* surface) {
 }
 
 template <class Canvas>
-void compare(benchmark::State& state, const Scene& scene, double tolerance) {
-    const int w = int(scene.width), h = int(scene.height);
+void compare(benchmark::State& state, const Scene& scene, double scale, double tolerance) {
+    const int w = int(std::ceil(scene.width * scale)), h = int(std::ceil(scene.height * scale));
     BandRenderer ours;
     Canvas canvas(w, h);
     RenderOptions options;
@@ -67,13 +69,16 @@ void compare(benchmark::State& state, const Scene& scene, double tolerance) {
     double ours_s = 0, cairo_s = 0;
     for (auto _ : state) {
         auto t = Clock::now();
-        ours.render(scene, Affine::identity(), canvas, options, {1, 1, 1, 1}, 1);
+        ours.render(scene, Affine::scale(scale), canvas, options, {1, 1, 1, 1}, 1);
         const double ours_frame = seconds_since(t);
         benchmark::DoNotOptimize(canvas.row(0));
         t = Clock::now();
         cairo_set_source_rgb(cr, 1, 1, 1);
         cairo_paint(cr);
+        cairo_save(cr);
+        cairo_scale(cr, scale, scale);
         draw_with_cairo(cr, scene);
+        cairo_restore(cr);
         cairo_surface_flush(surface);
         cairo_s += seconds_since(t);
         ours_s += ours_frame;
@@ -88,20 +93,23 @@ void compare(benchmark::State& state, const Scene& scene, double tolerance) {
 }
 
 template <class Canvas>
-void register_scene(const std::string& name, const std::shared_ptr<const Scene>& scene) {
+void register_scene(const std::string& name, const std::shared_ptr<const Scene>& scene,
+                    double scale) {
     const std::string format = std::is_same_v<Canvas, Canvas8> ? "/u8" : "/float";
     for (double tol : {0.25, 0.1}) {
         const std::string label = name + format + (tol == 0.25 ? "/tol:0.25" : "/tol:0.1");
         benchmark::RegisterBenchmark(
-            label.c_str(), [scene, tol](benchmark::State& s) { compare<Canvas>(s, *scene, tol); })
+            label.c_str(),
+            [scene, scale, tol](benchmark::State& s) { compare<Canvas>(s, *scene, scale, tol); })
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond);
     }
 }
 
-void register_scene(const std::string& name, std::shared_ptr<const Scene> scene) {
-    register_scene<Canvas>(name, scene);
-    register_scene<Canvas8>(name, scene);
+void register_scene(const std::string& name, std::shared_ptr<const Scene> scene,
+                    double scale = 1.0) {
+    register_scene<Canvas>(name, scene, scale);
+    register_scene<Canvas8>(name, scene, scale);
 }
 
 } // namespace
@@ -118,7 +126,9 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "%s\n", r.error.c_str());
             return 2;
         }
-        bench::register_scene(argv[i], std::make_shared<const Scene>(std::move(*r.scene)));
+        const double side = std::max(r.scene->width, r.scene->height);
+        bench::register_scene(argv[i], std::make_shared<const Scene>(std::move(*r.scene)),
+                              bench::kSceneSize / side);
     }
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();

@@ -43,7 +43,7 @@ void draw_shape(cairo_t* cr, const Shape& s) {
     const Affine& m = s.transform;
     const cairo_matrix_t matrix{m.a, m.b, m.c, m.d, m.e, m.f};
     cairo_save(cr);
-    cairo_set_matrix(cr, &matrix);
+    cairo_transform(cr, &matrix); // after the caller's view scale
     add_path(cr, s.path);
     if (s.fill) {
         cairo_set_fill_rule(cr, s.fill->rule == FillRule::EvenOdd ? CAIRO_FILL_RULE_EVEN_ODD

@@ -91,6 +91,14 @@ void BasicCanvas<Pixel>::reset(int width, int height, int ox, int oy, Premul cle
 }
 
 template <class Pixel>
+void BasicCanvas<Pixel>::resize(int width, int height) {
+    w_ = width, h_ = height, ox_ = 0, oy_ = 0;
+    view_ = nullptr;
+    stale_.clear();
+    px_.resize(std::size_t(width) * std::size_t(height));
+}
+
+template <class Pixel>
 void BasicCanvas<Pixel>::view_rows(BasicCanvas& parent, int y0, int rows, Premul clear) {
     w_ = parent.w_, h_ = rows, ox_ = parent.ox_, oy_ = parent.oy_ + y0;
     view_ = parent.row(y0);

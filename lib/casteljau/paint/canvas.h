@@ -58,6 +58,12 @@ class BasicCanvas {
     BasicCanvas(int width, int height, int ox = 0, int oy = 0);
     /// Resizes (keeping storage when large enough) and clears to `clear`.
     void reset(int width, int height, int ox = 0, int oy = 0, Premul clear = {});
+    /// Resizes (keeping storage when large enough) at origin (0, 0) without
+    /// clearing: the pixels are unspecified until written. For a renderer
+    /// that writes every pixel itself (BandRenderer::render clears each band
+    /// to its background as it draws), whose frame a clear here would only
+    /// double: 2.6% of the tiger's frame at 1024 px (perf).
+    void resize(int width, int height);
     /// Makes this canvas a view of `rows` whole rows of `parent` from row y0
     /// (its own storage is kept, unused): a band drawn in place, with no copy.
     /// Valid while the parent keeps its size. The rows are cleared to `clear`
