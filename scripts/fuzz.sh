@@ -2,7 +2,9 @@
 # Builds the libFuzzer targets of tests/fuzz with clang, AddressSanitizer and
 # UndefinedBehaviorSanitizer (build-fuzz/), then runs each for SECONDS
 # (default 60; CI runs a short smoke time, a campaign 600 or more).
-# Usage: [FUZZ_SEED=N] [FUZZ_OPT=-O1] scripts/fuzz.sh [SECONDS] [TARGET...]
+# Usage: [FUZZ_SEED=N] [FUZZ_OPT=-O1] [FUZZ_BUILD=DIR] scripts/fuzz.sh [SECONDS] [TARGET...]
+# FUZZ_BUILD: an existing clang build configured with -DCASTELJAU_FUZZ=ON
+# (CI's sanitizer build, which holds the tests too) instead of build-fuzz/.
 #
 # Each run starts from a copy of the seed corpus and the regressions
 # (tests/fuzz/corpus/NAME, regressions/NAME: the checked-in seeds stay small),
@@ -24,14 +26,17 @@ targets=("$@")
 # -g1: line tables only, enough for the sanitizers' file:line stack traces.
 # FUZZ_OPT: the optimisation level (-O2; CI's short smoke builds at -O1,
 # a third less compile time for a few seconds of fuzzing).
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="${FUZZ_OPT:--O2} -g1 -DNDEBUG" \
-    -DCASTELJAU_FUZZ=ON -DCASTELJAU_BUILD_TESTS=OFF -DCASTELJAU_BUILD_BENCH=OFF >/dev/null
-cmake --build build-fuzz -j "$(nproc)" --target "${targets[@]/#/fuzz_}"
+build=${FUZZ_BUILD:-build-fuzz}
+if [[ -z ${FUZZ_BUILD:-} ]]; then
+  CC=clang CXX=clang++ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="${FUZZ_OPT:--O2} -g1 -DNDEBUG" \
+      -DCASTELJAU_FUZZ=ON -DCASTELJAU_BUILD_TESTS=OFF -DCASTELJAU_BUILD_BENCH=OFF >/dev/null
+fi
+cmake --build "$build" -j "$(nproc)" --target "${targets[@]/#/fuzz_}"
 
 status=0
 for name in "${targets[@]}"; do
-    work="build-fuzz/work/$name" findings="build-fuzz/findings/$name"
+    work="$build/work/$name" findings="$build/findings/$name"
     rm -rf "$work"; mkdir -p "$work" "$findings"
     cp tests/fuzz/corpus/"$name"/* "$work"/
     [[ -d tests/fuzz/regressions/$name ]] && cp tests/fuzz/regressions/"$name"/* "$work"/
@@ -44,14 +49,14 @@ for name in "${targets[@]}"; do
         text_layout) dict=(-dict=tests/fuzz/text_layout.dict) ;;
     esac
     echo "fuzz_$name: ${seconds}s"
-    if ! UBSAN_OPTIONS=print_stacktrace=1 LSAN_OPTIONS=suppressions=tests/lsan.supp "build-fuzz/tests/fuzz/fuzz_$name" "$work" "${dict[@]}" \
+    if ! UBSAN_OPTIONS=print_stacktrace=1 LSAN_OPTIONS=suppressions=tests/lsan.supp "$build/tests/fuzz/fuzz_$name" "$work" "${dict[@]}" \
             -max_total_time="$seconds" -rss_limit_mb=1024 -malloc_limit_mb=1024 -timeout="$timeout" \
-            -artifact_prefix="$findings/" -print_final_stats=1 -seed="${FUZZ_SEED:-0}" >"build-fuzz/fuzz_$name.log" 2>&1; then
-        echo "fuzz_$name: FINDING, see build-fuzz/fuzz_$name.log and $findings/"
-        tail -n 40 "build-fuzz/fuzz_$name.log"
+            -artifact_prefix="$findings/" -print_final_stats=1 -seed="${FUZZ_SEED:-0}" >"$build/fuzz_$name.log" 2>&1; then
+        echo "fuzz_$name: FINDING, see $build/fuzz_$name.log and $findings/"
+        tail -n 40 "$build/fuzz_$name.log"
         status=1
     else
-        grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb' "build-fuzz/fuzz_$name.log" | tr '\n' ' '
+        grep -E '^stat::number_of_executed_units|^stat::peak_rss_mb' "$build/fuzz_$name.log" | tr '\n' ' '
         echo
     fi
 done

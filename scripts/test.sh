@@ -49,14 +49,16 @@ unit_test_shards build
 # Sanitizers: the same tests, minus the install test (its consumer project is
 # built without the sanitizer runtime the instrumented library needs) and the
 # Python package (an instrumented module cannot load into python3; the
-# configuration leaves it out). -g1:
-# line tables only, which is all a sanitizer's stack trace reads (file:line),
-# at 10-30% less compile time per file than -g. -O1: a third less compile
-# time than -O2 (11.0 s against 7.4 s for a test file), for tests that run
-# a little slower; with text the pass had grown past CI's 15 minutes.
-cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCASTELJAU_WERROR=ON \
-      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-      -DCASTELJAU_SANITIZE=ON -DCASTELJAU_BUILD_BENCH=OFF
+# configuration leaves it out). One clang build serves this pass and the
+# fuzzing smoke below (-DCASTELJAU_FUZZ=ON with the tests: ASan, UBSan and
+# libFuzzer's coverage on one library), where two builds of the library
+# took a third of CI's 15 minutes. -g1: line tables only, which is all a
+# sanitizer's stack trace reads (file:line), at 10-30% less compile time per
+# file than -g. -O1: a third less compile time than -O2, for tests that run
+# a little slower.
+CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCASTELJAU_WERROR=ON -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
+      -DCASTELJAU_FUZZ=ON -DCASTELJAU_BUILD_BENCH=OFF -DCASTELJAU_PYTHON=OFF
 cmake --build build-asan -j "$jobs"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp
@@ -64,14 +66,15 @@ export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp
 # sanitizer start-ups cost more than the tests: 153 s of ctest against 80).
 # Not the rsvg agreement (40 s here, for pictures the unit shards render
 # under the sanitizers too: EffectFormats draws every effects file, and
-# the svg_render fuzz replay the examples' kinds of content).
+# the svg_render fuzz target the examples' kinds of content).
 ctest --test-dir build-asan -j "$jobs" --output-on-failure -E '^install\.|^[A-Z]|^svg\.rsvg_agreement$'
 unit_test_shards build-asan
 unset ASAN_OPTIONS UBSAN_OPTIONS LSAN_OPTIONS
 
-# Fuzzing smoke: 4 s per target from the seed corpus (and the regressions),
-# with a fixed seed so that a run is repeatable, built at -O1; campaigns run
+# Fuzzing smoke: 4 s per target from the seed corpus (and the regressions,
+# which this replays: the fuzz build has no ctest replays), with a fixed seed
+# so that a run is repeatable, on the sanitizer build; campaigns run
 # scripts/fuzz.sh 600 or more. (With seven targets at 6 s and the sanitizer
 # pass at -O2, the whole command took 1002 s on the 2-core machine: over
 # CI's 15 minutes.)
-FUZZ_SEED=1 FUZZ_OPT=-O1 bash scripts/fuzz.sh 4
+FUZZ_SEED=1 FUZZ_BUILD=build-asan bash scripts/fuzz.sh 4

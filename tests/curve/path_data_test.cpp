@@ -28,20 +28,20 @@ TEST(PathData, EveryCommandAbsoluteAndRelative) {
                  "T100 30 A10 10 0 0 1 120 30 Z "
                  "m5 5 l10 0 h5 v5 c0 5 5 5 5 0 s5 -5 5 0 q5 5 10 0 t10 0 a5 5 0 0 0 10 0 z");
     ASSERT_EQ(p.subpaths().size(), 2u);
-    EXPECT_EQ(p.subpaths()[0].start, Point(10, 20));
+    EXPECT_EQ(p.subpaths()[0].start, (Point{10, 20}));
     EXPECT_TRUE(p.subpaths()[0].closed);
     // The relative subpath starts at the first subpath's start + (5, 5).
-    EXPECT_EQ(p.subpaths()[1].start, Point(15, 25));
+    EXPECT_EQ(p.subpaths()[1].start, (Point{15, 25}));
     const auto& segs = p.subpaths()[0].segments;
-    EXPECT_EQ(segment_end(segs[1]), Point(40, 20));
-    EXPECT_EQ(segment_end(segs[2]), Point(40, 30));
+    EXPECT_EQ(segment_end(segs[1]), (Point{40, 20}));
+    EXPECT_EQ(segment_end(segs[2]), (Point{40, 30}));
     // S reflects the previous cubic's second control point (40 40 -> 60 20).
     const auto& s = std::get<CubicBez>(segs[4]);
-    EXPECT_EQ(s.p[1], Point(50, 20));
+    EXPECT_EQ(s.p[1], (Point{50, 20}));
     // T reflects the previous quadratic's control point about (80, 30).
     const auto& t = std::get<QuadBez>(segs[6]);
-    EXPECT_EQ(t.p[1], Point(90, 20));
-    EXPECT_EQ(segment_end(p.subpaths()[1].segments[1]), Point(30, 25));
+    EXPECT_EQ(t.p[1], (Point{90, 20}));
+    EXPECT_EQ(segment_end(p.subpaths()[1].segments[1]), (Point{30, 25}));
 }
 
 TEST(PathData, CompactNumbersAndImplicitRepeats) {
@@ -56,17 +56,17 @@ TEST(PathData, CompactNumbersAndImplicitRepeats) {
 
 TEST(PathData, ArcFlagsWithoutSeparators) {
     const Path p = parse_ok("M0 0a1 1 0 00 10 0A5,5,0,1,1,0,0");
-    EXPECT_EQ(ends(p).back(), Point(0, 0));
+    EXPECT_EQ(ends(p).back(), (Point{0, 0}));
     const Path q = parse_ok("M0 0a5 5 0 1110 0");
-    EXPECT_EQ(ends(q).back(), Point(10, 0));
+    EXPECT_EQ(ends(q).back(), (Point{10, 0}));
 }
 
 TEST(PathData, SmoothCurveWithoutPredecessorUsesCurrentPoint) {
     const Path p = parse_ok("M10 10 S20 20 30 10 T 50 10");
     const auto& s = std::get<CubicBez>(p.subpaths()[0].segments[0]);
-    EXPECT_EQ(s.p[1], Point(10, 10));
+    EXPECT_EQ(s.p[1], (Point{10, 10}));
     const auto& t = std::get<QuadBez>(p.subpaths()[0].segments[1]);
-    EXPECT_EQ(t.p[1], Point(30, 10));
+    EXPECT_EQ(t.p[1], (Point{30, 10}));
 }
 
 struct BadCase {
@@ -127,13 +127,13 @@ TEST(PathData, TinyArcRadiiScaleUpToAHalfCircle) {
     const Path p = parse_ok("M0 0 A1e-300 1e-300 0 0 1 1 0");
     ASSERT_GT(p.segment_count(), 0u);
     for (double u = 0; u <= double(p.segment_count()); u += 0.125)
-        EXPECT_NEAR(distance(p.eval(0, u), Point(0.5, 0)), 0.5, 1e-12) << "u = " << u;
+        EXPECT_NEAR(distance(p.eval(0, u), (Point{0.5, 0})), 0.5, 1e-12) << "u = " << u;
     EXPECT_NEAR(p.bounds().y0, -0.5, 1e-12); // sweep 1 from (0,0) to (1,0) runs through y < 0
 }
 
 TEST(PathData, UnderflowIsZeroNotAnError) {
     const Path p = parse_ok("M0 0 L1e-400 5");
-    EXPECT_EQ(ends(p).back(), Point(0, 5));
+    EXPECT_EQ(ends(p).back(), (Point{0, 5}));
 }
 
 TEST(PathData, EmptyAndWhitespaceOnlyAreValidAndEmpty) {

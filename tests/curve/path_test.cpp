@@ -16,13 +16,13 @@ TEST(Path, BuilderFollowsSvgSubpathRules) {
     const Subpath& a = p.subpaths()[0];
     EXPECT_TRUE(a.closed);
     EXPECT_EQ(a.segments.size(), 3u);
-    EXPECT_EQ(segment_end(a.segments.back()), Point(0, 0));
-    EXPECT_EQ(p.subpaths()[1].start, Point(0, 0));
+    EXPECT_EQ(segment_end(a.segments.back()), (Point{0, 0}));
+    EXPECT_EQ(p.subpaths()[1].start, (Point{0, 0}));
     p.move_to({1, 1});
     p.move_to({2, 2}); // a lone move_to leaves no empty subpath behind
     p.cubic_to({3, 3}, {4, 3}, {5, 2});
     EXPECT_EQ(p.subpaths().size(), 3u);
-    EXPECT_EQ(p.subpaths()[2].start, Point(2, 2));
+    EXPECT_EQ(p.subpaths()[2].start, (Point{2, 2}));
 }
 
 TEST(Path, GlobalParameterisationWalksTheSegments) {
@@ -30,12 +30,12 @@ TEST(Path, GlobalParameterisationWalksTheSegments) {
     p.move_to({0, 0});
     p.line_to({10, 0});
     p.cubic_to({10, 5}, {5, 10}, {0, 10});
-    EXPECT_EQ(p.eval(0, 0.5), Point(5, 0));
-    EXPECT_EQ(p.eval(0, 1.0), Point(10, 0));
+    EXPECT_EQ(p.eval(0, 0.5), (Point{5, 0}));
+    EXPECT_EQ(p.eval(0, 1.0), (Point{10, 0}));
     const CubicBez c{{10, 0}, {10, 5}, {5, 10}, {0, 10}};
     EXPECT_EQ(p.eval(0, 1.25), c.eval(0.25));
-    EXPECT_EQ(p.eval(0, 2.0), Point(0, 10));
-    EXPECT_EQ(p.eval(0, 7.0), Point(0, 10)); // clamped
+    EXPECT_EQ(p.eval(0, 2.0), (Point{0, 10}));
+    EXPECT_EQ(p.eval(0, 7.0), (Point{0, 10})); // clamped
 }
 
 TEST(Path, TransformAndBounds) {

@@ -52,8 +52,8 @@ TEST(Affine, CompositionAppliesRightToLeft) {
 
 TEST(Affine, VectorsIgnoreTranslationAndMaxScaleIsLargestStretch) {
     const Affine t = Affine::translate({5, 7});
-    EXPECT_EQ(t * Vec2(1, 2), Vec2(1, 2));
-    EXPECT_EQ(t * Point(1, 2), Point(6, 9));
+    EXPECT_EQ(t * (Vec2{1, 2}), (Vec2{1, 2}));
+    EXPECT_EQ(t * (Point{1, 2}), (Point{6, 9}));
     EXPECT_NEAR((Affine::rotate(0.3) * Affine::scale(3, 0.5)).max_scale(), 3.0, 1e-12);
     EXPECT_NEAR(Affine::skew_x(std::numbers::pi / 4).max_scale(),
                 std::sqrt((3 + std::sqrt(5.0)) / 2), 1e-12);

@@ -57,7 +57,12 @@ TEST(PartialRender, TileEqualsFullRenderOnTheExamples) {
 Shape random_shape(Rng& rng, double extent) {
     Shape s;
     const Vec2 at{rng.uniform(-20, extent), rng.uniform(-20, extent)};
-    s.path = testing::random_blob(rng, rng.uniform(5, 80), rng.integer(1, 5));
+    // Drawn in order: function arguments are evaluated in an unspecified
+    // order (GCC right to left, clang left to right), which gave the two
+    // compilers different shapes.
+    const double radius = rng.uniform(5, 80);
+    const int lobes = rng.integer(1, 5);
+    s.path = testing::random_blob(rng, radius, lobes);
     s.transform = Affine::translate(at) * Affine::rotate(rng.uniform(0, 6.28));
     const Rgba color{float(rng.uniform(0, 1)), float(rng.uniform(0, 1)), float(rng.uniform(0, 1)),
                      float(rng.uniform(0.3, 1))};
@@ -259,6 +264,10 @@ TEST(DrawingHit, ShapesInSelectsWhatTheRubberBandTouches) {
         if (!selected) {
             EXPECT_EQ(coverage(c, 100, 120, 140, 170), 0.0f) << "shape " << i;
         } else {
+            // A fill of zero area (random_blob's one-lobe outline goes out
+            // and back along one curve) is selected where its outline meets
+            // the band, and draws nothing anywhere.
+            if (coverage(c, 0, 0, 300, 300) == 0.0f) continue;
             EXPECT_GT(coverage(c, 99, 119, 141, 171), 0.0f) << "shape " << i;
         }
     }

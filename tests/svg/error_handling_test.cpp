@@ -99,7 +99,7 @@ TEST(ErrorHandling, InvalidGeometryAndTransformsFollowTheSpec) {
         {R"svg(<rect transform="rotate(1,2)" width="1" height="1"/>)svg",
          "t.svg:2: <rect>: transform: rotate()",
          [](const Scene& s) {
-             EXPECT_EQ((shape_at(s, 0).transform * Point{1, 1}), Point(1, 1));
+             EXPECT_EQ((shape_at(s, 0).transform * Point{1, 1}), (Point{1, 1}));
          }},
         // Odd coordinate counts drop the last number; one point draws nothing.
         {R"svg(<polygon points="0 0 10 0 10 10 5"/>)svg",
@@ -114,7 +114,7 @@ TEST(ErrorHandling, RootAttributesInErrorTakeTheirInitialValues) {
     // An invalid viewBox is ignored: the rect maps one to one.
     run({"<rect width='5' height='5'/>", "t.svg:1: <svg>: viewBox: '0 0 ten 10'",
          [](const Scene& s) {
-             EXPECT_EQ((shape_at(s, 0).transform * Point{5, 5}), Point(5, 5));
+             EXPECT_EQ((shape_at(s, 0).transform * Point{5, 5}), (Point{5, 5}));
          }},
         R"svg(width="100" height="100" viewBox="0 0 ten 10")svg");
     run({"<rect width='5' height='5'/>", "viewBox: a negative width",
@@ -123,7 +123,7 @@ TEST(ErrorHandling, RootAttributesInErrorTakeTheirInitialValues) {
     // xMidYMid meet instead: 0..10 into 200 x 100 is scaled by 10 and centred.
     run({"<rect width='10' height='10'/>", "preserveAspectRatio: 'xMidYMiddle'",
          [](const Scene& s) {
-             EXPECT_EQ((shape_at(s, 0).transform * Point{0, 0}), Point(50, 0));
+             EXPECT_EQ((shape_at(s, 0).transform * Point{0, 0}), (Point{50, 0}));
          }},
         R"svg(width="200" height="100" viewBox="0 0 10 10" preserveAspectRatio="xMidYMiddle")svg");
     // An invalid width is auto, 100%: the viewBox's.

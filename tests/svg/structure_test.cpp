@@ -186,10 +186,12 @@ TEST(Markers, BrokenReferencesAndExpansionPastTheLimit) {
     SvgOptions few;
     few.max_elements = 1000;
     const SvgResult big = read(R"svg(<marker id="m"><g><rect width="1" height="1"/><rect/><rect/>
-        </g></marker><path d=")svg" + d + R"svg(" marker-mid="url(#m)"/>)svg",
+        </g></marker><path d=")svg" +
+                                   d + R"svg(" marker-mid="url(#m)"/>)svg",
                                few);
     EXPECT_FALSE(big.scene);
-    EXPECT_NE(big.error.find("more than 1000 elements once its markers are drawn"), std::string::npos)
+    EXPECT_NE(big.error.find("more than 1000 elements once its markers are drawn"),
+              std::string::npos)
         << big.error;
 }
 
@@ -226,15 +228,15 @@ TEST(Painting, NonScalingStrokeIsDrawnInHostSpace) {
         stroke="black" stroke-width="2" vector-effect="non-scaling-stroke"/></g>)svg");
     ASSERT_TRUE(r.scene) << r.error;
     const Shape& s = *shapes(*r.scene).at(0);
-    EXPECT_EQ((s.transform * Point{7, 9}), Point(7, 9));
-    EXPECT_EQ((s.transform * Point{0, 0}), Point(0, 0));
+    EXPECT_EQ((s.transform * Point{7, 9}), (Point{7, 9}));
+    EXPECT_EQ((s.transform * Point{0, 0}), (Point{0, 0}));
     expect_box(s, {12, 10, 92, 90}, "the path mapped into host space");
     EXPECT_EQ(s.stroke->geometry.width, 2); // 2 px, not 8 by 4
     // The gradient's objectBoundingBox map is kept: the unit square lands on
     // the same device box.
     ASSERT_TRUE(s.fill->gradient);
     EXPECT_FALSE(s.fill->gradient->object_bounding_box);
-    EXPECT_EQ((s.fill->gradient->transform * Point{1, 1}), Point(92, 90));
+    EXPECT_EQ((s.fill->gradient->transform * Point{1, 1}), (Point{92, 90}));
 }
 
 TEST(TransformOrigin, TheTransformIsAppliedAboutIt) {

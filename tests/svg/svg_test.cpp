@@ -61,16 +61,16 @@ TEST(Reader, ViewBoxAndPreserveAspectRatio) {
                               R"(width="200" height="100" viewBox="0 0 10 10")");
     ASSERT_TRUE(r.scene) << r.error;
     const Affine& m = first_shape(*r.scene).transform;
-    EXPECT_EQ((m * Point{0, 0}), Point(50, 0));
-    EXPECT_EQ((m * Point{10, 10}), Point(150, 100));
+    EXPECT_EQ((m * Point{0, 0}), (Point{50, 0}));
+    EXPECT_EQ((m * Point{10, 10}), (Point{150, 100}));
     const SvgResult s = parse(
         R"(<rect width="10" height="10"/>)",
         R"(width="200" height="100" viewBox="0 0 10 10" preserveAspectRatio="xMinYMax slice")");
-    EXPECT_EQ((first_shape(*s.scene).transform * Point{10, 10}), Point(200, 200 - 100));
+    EXPECT_EQ((first_shape(*s.scene).transform * Point{10, 10}), (Point{200, 200 - 100}));
     const SvgResult n =
         parse(R"(<rect width="10" height="10"/>)",
               R"(width="200" height="100" viewBox="0 0 10 10" preserveAspectRatio="none")");
-    EXPECT_EQ((first_shape(*n.scene).transform * Point{10, 10}), Point(200, 100));
+    EXPECT_EQ((first_shape(*n.scene).transform * Point{10, 10}), (Point{200, 100}));
     // No width/height: the viewBox size.
     const SvgResult v = parse("", R"(viewBox="0 0 30 20")");
     EXPECT_EQ(v.scene->width, 30);
@@ -133,9 +133,8 @@ TEST(Reader, UnsupportedElementsAreSkippedWithOneWarningEach) {
     // where an element refers to it; blink is not SVG: not rendered, as
     // unknown elements are not (no warning). An image without an href draws
     // nothing, as the spec says, with no warning.
-    const SvgResult r =
-        parse("<foreignObject/><filter/><image/><defs><linearGradient/></defs>"
-              "<title>t</title><blink/><rect width='1' height='1'/>");
+    const SvgResult r = parse("<foreignObject/><filter/><image/><defs><linearGradient/></defs>"
+                              "<title>t</title><blink/><rect width='1' height='1'/>");
     ASSERT_TRUE(r.scene) << r.error;
     EXPECT_EQ(r.scene->root.children.size(), 1u);
     EXPECT_EQ(r.warnings.size(), 1u);

@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 namespace casteljau {
 
@@ -184,6 +185,10 @@ std::uint32_t Font::glyph_index(char32_t c) const {
     return FT_Get_Char_Index(impl_->face, FT_ULong(c));
 }
 
+// The outline's point count is bounded by its type (Font::kMaxOutlinePoints).
+static_assert(std::numeric_limits<decltype(FT_Outline::n_points)>::max() <=
+              Font::kMaxOutlinePoints);
+
 const Path& Font::outline(std::uint32_t glyph) const {
     std::lock_guard lock(mutex_);
     if (const auto it = outlines_.find(glyph); it != outlines_.end()) return it->second;
@@ -192,8 +197,7 @@ const Path& Font::outline(std::uint32_t glyph) const {
     if (glyph < glyph_count_ &&
         FT_Load_Glyph(face, glyph, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP) ==
             0 &&
-        face->glyph->format == FT_GLYPH_FORMAT_OUTLINE &&
-        face->glyph->outline.n_points <= kMaxOutlinePoints)
+        face->glyph->format == FT_GLYPH_FORMAT_OUTLINE)
         path = path_of(face->glyph->outline);
     return path;
 }

@@ -77,9 +77,10 @@ class Font {
     /// Whether the font is variable along the design axis `tag` ("wght").
     bool has_axis(const char tag[4]) const;
 
-    /// An outline with more points than this is not read (empty): a hostile
-    /// font cannot make one glyph cost unbounded time.
-    static constexpr int kMaxOutlinePoints = 1 << 16;
+    /// The most points a glyph outline can have: FreeType 2.12 (Debian 12)
+    /// counts them in a signed short, and fails to load a glyph with more,
+    /// so a hostile font cannot make one glyph cost unbounded time.
+    static constexpr int kMaxOutlinePoints = 32767;
 
     struct Impl; ///< FreeType and HarfBuzz handles (text/detail/font_impl.h)
     Impl& impl() const { return *impl_; }
