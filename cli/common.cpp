@@ -70,12 +70,26 @@ void add_svg_options(CLI::App* cmd, SvgOptions& o) {
     cmd->add_flag("--partial-path-data")->group("");
 }
 
-std::optional<Scene> load_svg(const std::string& path, const SvgOptions& options, int& status) {
+void Messages::warn(std::string_view what) {
+    text.append("warning: ").append(what).append("\n");
+    ++warnings;
+}
+
+void Messages::fail(std::string_view what) {
+    text.append("error: ").append(what).append("\n");
+    if (error.empty()) error = what;
+}
+
+void Messages::print() const {
+    if (!text.empty()) std::fputs(text.c_str(), stderr);
+}
+
+std::optional<Scene> load_svg(const std::string& path, const SvgOptions& options, int& status,
+                              Messages& log) {
     SvgResult doc = read_svg_file(path, options);
-    for (const SvgDiagnostic& w : doc.warnings)
-        std::fprintf(stderr, "warning: %s\n", w.text().c_str());
+    for (const SvgDiagnostic& w : doc.warnings) log.warn(w.text());
     if (!doc.scene) {
-        std::fprintf(stderr, "error: %s\n", doc.error.c_str());
+        log.fail(doc.error);
         status = doc.io_error ? kExitFailure : kExitBadInput;
     }
     return std::move(doc.scene);

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace casteljau::cli {
 
@@ -35,8 +36,22 @@ bool check_tolerance(const char* command, double tolerance);
 // anyway), into `o`.
 void add_svg_options(CLI::App* cmd, SvgOptions& o);
 
-// Reads an SVG file and prints its warnings. On failure prints the located
+// What a command has to say about one input, kept to be printed in one
+// piece: the messages of files rendered at the same time never interleave.
+struct Messages {
+    std::string text;  ///< "warning: ...\n" and "error: ...\n" lines, in order
+    std::string error; ///< the first error, without its "error: "
+    int warnings = 0;
+
+    void warn(std::string_view what);
+    void fail(std::string_view what);
+    /// Writes `text` to stderr in one call (stdio locks the stream for it).
+    void print() const;
+};
+
+// Reads an SVG file; its warnings go to `log`. On failure logs the located
 // error, sets `status` (2 bad input, 1 unreadable file) and returns nothing.
-std::optional<Scene> load_svg(const std::string& path, const SvgOptions& options, int& status);
+std::optional<Scene> load_svg(const std::string& path, const SvgOptions& options, int& status,
+                              Messages& log);
 
 } // namespace casteljau::cli

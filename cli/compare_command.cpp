@@ -84,7 +84,9 @@ Canvas heat_map(const Canvas& a, const Canvas& b, double& max_diff, double& mean
 int run_compare(const CompareArgs& a) {
     if (!check_tolerance("compare", a.tolerance)) return kExitBadInput;
     int status = kExitOk;
-    const std::optional<Scene> scene = load_svg(a.input, a.svg, status);
+    Messages log;
+    const std::optional<Scene> scene = load_svg(a.input, a.svg, status, log);
+    log.print();
     if (!scene) return status;
     if (scene->width * scene->height > double(1 << 24)) {
         std::fprintf(stderr,

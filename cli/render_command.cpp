@@ -1,37 +1,34 @@
-// `casteljau render IN.svg... -o OUT [--width W | --height H | --scale S] [--tolerance PX]
-//   [--flatten adaptive|uniform] [--segments N] [--antialias on|off] [--background COLOR]
-//   [--threads N] [--pixels float|u8] [--repeat N] [--stats FILE|-]`
+// `casteljau render IN.svg... [--from-list FILE|-] -o OUT [--width W | --height H | --scale S]
+//   [--tolerance PX] [--flatten adaptive|uniform] [--segments N] [--antialias on|off]
+//   [--background COLOR] [--threads N] [--pixels float|u8] [--repeat N] [--stats FILE|-]`
 //
-// One input renders to OUT (format from its extension); several inputs, or an
-// OUT ending in '/', render into that folder as NAME.png. --stats writes one
-// JSON object per input (one per line), with the stage times as medians over
+// One input renders to OUT (format from its extension); several inputs, a
+// list, or an OUT ending in '/' render into that folder as NAME.png, on
+// every thread (render_batch.cpp). --stats writes one JSON object per input
+// (one per line, in input order), with the stage times as medians over
 // --repeat renders of the already parsed scene.
 #include "casteljau/io/atomic_file.h"
-#include "casteljau/io/canvas_write.h"
-#include "casteljau/render/bands.h"
 #include "casteljau/render/output_size.h"
 #include "casteljau/svg/color.h"
-#include "casteljau/svg/reader.h"
 #include "commands.h"
 #include "common.h"
-#include "json.h"
+#include "render_batch.h"
+#include "render_file.h"
+#include "render_inputs.h"
 
 #include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
 #include <map>
-#include <thread>
+#include <optional>
 #include <unistd.h>
+#include <vector>
 
 namespace casteljau::cli {
 
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 constexpr int kMaxRepeat = 100000;
 
@@ -39,106 +36,25 @@ constexpr int kMaxRepeat = 100000;
 // copies bound the options' ranges and must agree.
 static_assert(kMaxSide == kMaxOutputSide && kMaxPixels == kMaxOutputPixels);
 
-struct RenderArgs {
-    std::vector<std::string> inputs;
-    std::string output;
-    double width = 0, height = 0, scale = 0;
-    FlattenOptions flatten;
-    SvgOptions svg;
-    bool antialias = true;
-    bool linear_light = false;
-    std::string background;
-    int threads = 0;
-    bool u8 = false; // --pixels u8: draw onto a Canvas8
-    int repeat = 1;
-    std::string stats;
-};
-
-int threads(const RenderArgs& a) {
-    return a.threads > 0 ? a.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-}
-
-double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(d).count(); }
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    const std::size_t n = v.size();
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-struct Outcome {
-    int status = kExitOk;
-    std::string stats_json;
-};
-
-template <class Target>
-Outcome render_one(const RenderArgs& a, const std::string& input, const std::string& output,
-                   Premul background, BandRenderer& renderer, Target& canvas) {
-    Outcome out;
-    const auto t0 = Clock::now();
-    const std::optional<Scene> loaded = load_svg(input, a.svg, out.status);
-    if (!loaded) return out;
-    const Scene& scene = *loaded;
-    const double parse_ms = ms(Clock::now() - t0);
-    const OutputSize size = output_size(scene.width, scene.height, {a.width, a.height, a.scale});
-    if (!size.error.empty()) {
-        std::fprintf(stderr, "error: %s: %s\n", input.c_str(), size.error.c_str());
-        out.status = kExitBadInput;
-        return out;
+// The inputs from the arguments, then from the list; nullopt (after a
+// message) when the list cannot be read.
+std::optional<std::vector<RenderJob>> gather_inputs(const RenderArgs& a) {
+    std::vector<RenderJob> jobs;
+    for (const std::string& in : a.inputs) jobs.push_back({in, "", "", ""});
+    std::string error;
+    if (!a.from_list.empty() && !read_input_list(a.from_list, jobs, error)) {
+        std::fprintf(stderr, "casteljau render: %s\n", error.c_str());
+        return std::nullopt;
     }
-    const double s = size.scale;
-    const int w = size.width, h = size.height;
-    const RenderOptions options{.flatten = a.flatten,
-                                .antialias = a.antialias,
-                                .linear_light_gradients = a.linear_light,
-                                .time_stages = !a.stats.empty()};
-    std::vector<double> flatten_ms, raster_ms, frame_ms;
-    RenderStats stats;
-    for (int i = 0; i < a.repeat; ++i) {
-        const auto f0 = Clock::now();
-        canvas.resize(w, h); // the renderer clears each band to the background
-        stats = renderer.render(scene, Affine::scale(s), canvas, options, background, threads(a));
-        frame_ms.push_back(ms(Clock::now() - f0));
-        flatten_ms.push_back(stats.flatten_ms);
-        raster_ms.push_back(stats.raster_ms);
-    }
-    const auto e0 = Clock::now();
-    const std::string err = write_canvas_atomic(output, canvas);
-    const double encode_ms = ms(Clock::now() - e0);
-    if (!err.empty()) {
-        std::fprintf(stderr, "error: %s\n", err.c_str());
-        out.status = kExitFailure;
-        return out;
-    }
-    const double total_ms = ms(Clock::now() - t0);
-    if (a.stats.empty()) return out;
-    // Segment counts and the exact flattening error, from a separate, untimed
-    // single-band pass (bands repeat the flattening of shapes they share).
-    Canvas scratch{w, h};
-    Renderer measure;
-    const RenderStats m = measure.render(
-        scene, Affine::scale(s), scratch,
-        {.flatten = options.flatten, .antialias = a.antialias, .measure_error = true});
-    stats.flatten = m.flatten;
-    out.stats_json = "{\"input\": " + json_string(input) + ", \"output\": " + json_string(output) +
-                     ", \"segments_in\": " + std::to_string(stats.flatten.curves_in) +
-                     ", \"segments_out\": " + std::to_string(stats.flatten.segments_out) +
-                     ", \"max_error_px\": " + json_number(m.flatten.max_error) +
-                     ", \"parse_ms\": " + json_number(parse_ms) +
-                     ", \"flatten_ms\": " + json_number(median(flatten_ms)) +
-                     ", \"raster_ms\": " + json_number(median(raster_ms)) +
-                     ", \"encode_ms\": " + json_number(encode_ms) +
-                     ", \"frame_ms\": " + json_number(median(frame_ms)) +
-                     ", \"total_ms\": " + json_number(total_ms) +
-                     ", \"width\": " + std::to_string(w) + ", \"height\": " + std::to_string(h) +
-                     ", \"threads\": " + std::to_string(threads(a)) +
-                     ", \"pixels\": " + (a.u8 ? "\"u8\"" : "\"float\"") +
-                     ", \"repeat\": " + std::to_string(a.repeat) + "}";
-    return out;
+    return jobs;
 }
 
 int run_render(const RenderArgs& a) {
     if (!check_tolerance("render", a.flatten.tolerance)) return kExitBadInput;
+    if (a.inputs.empty() && a.from_list.empty()) {
+        std::fprintf(stderr, "casteljau render: no input: give SVG files, or --from-list FILE\n");
+        return kExitBadInput;
+    }
     Premul background{};
     if (!a.background.empty()) {
         const auto c = parse_color(a.background);
@@ -149,7 +65,11 @@ int run_render(const RenderArgs& a) {
         }
         background = premultiply(*c);
     }
-    const bool to_folder = a.inputs.size() > 1 || (!a.output.empty() && a.output.back() == '/');
+    std::optional<std::vector<RenderJob>> jobs = gather_inputs(a);
+    if (!jobs) return kExitBadInput;
+    // A list may hold any number of files, one among them: always a folder.
+    const bool to_folder = a.inputs.size() > 1 || !a.from_list.empty() ||
+                           (!a.output.empty() && a.output.back() == '/');
     if (to_folder) {
         std::error_code ec;
         fs::create_directories(a.output, ec);
@@ -159,28 +79,21 @@ int run_render(const RenderArgs& a) {
             return kExitFailure;
         }
     }
-    const bool progress = to_folder && ::isatty(2);
-    BandRenderer renderer;
-    Canvas canvas;
-    Canvas8 canvas8;
-    int status = kExitOk;
+    plan_outputs(*jobs, a.output, to_folder);
+    // Records go to stdout as they come (a pipeline sees each file when it
+    // and those before it are done), to a file at the end (written whole).
     std::string stats;
-    for (std::size_t i = 0; i < a.inputs.size(); ++i) {
-        const std::string& in = a.inputs[i];
-        const std::string out =
-            to_folder ? (fs::path(a.output) / fs::path(in).stem()).string() + ".png" : a.output;
-        if (progress)
-            std::fprintf(stderr, "\r[%zu/%zu] %s\033[K", i + 1, a.inputs.size(), in.c_str());
-        const Outcome o = a.u8 ? render_one(a, in, out, background, renderer, canvas8)
-                               : render_one(a, in, out, background, renderer, canvas);
-        status = std::max(status, o.status);
-        if (!o.stats_json.empty()) stats += o.stats_json + "\n";
-    }
-    if (progress) std::fprintf(stderr, "\n");
-    if (!a.stats.empty() && !stats.empty()) {
+    const RecordSink sink = [&](const std::string& record) {
         if (a.stats == "-") {
-            std::fputs(stats.c_str(), stdout);
-        } else if (const std::string err = write_file_atomic(a.stats, stats); !err.empty()) {
+            std::fputs((record + "\n").c_str(), stdout);
+            std::fflush(stdout);
+        } else {
+            stats += record + "\n";
+        }
+    };
+    int status = render_batch(a, background, *jobs, to_folder && ::isatty(2), sink);
+    if (!a.stats.empty() && a.stats != "-" && !stats.empty()) {
+        if (const std::string err = write_file_atomic(a.stats, stats); !err.empty()) {
             std::fprintf(stderr, "error: --stats %s\n", err.c_str());
             status = std::max(status, kExitFailure);
         }
@@ -193,7 +106,10 @@ int run_render(const RenderArgs& a) {
 Command add_render_command(CLI::App& app) {
     auto a = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand("render", "Render SVG files to images");
-    cmd->add_option("inputs", a->inputs, "SVG files")->required()->check(CLI::ExistingFile);
+    cmd->add_option("inputs", a->inputs, "SVG files")->check(CLI::ExistingFile);
+    cmd->add_option("--from-list", a->from_list,
+                    "Also render the SVG files listed in FILE, one path a line (- for the "
+                    "standard input); the output is then a folder");
     cmd->add_option("-o,--output", a->output,
                     "Output image (png, tif, exr, jpg), or a folder for several inputs")
         ->required();
@@ -217,7 +133,8 @@ Command add_render_command(CLI::App& app) {
         ->transform(CLI::CheckedTransformer(spaces, CLI::ignore_case));
     cmd->add_option("--background", a->background, "Background color (default transparent)");
     cmd->add_option("--threads", a->threads,
-                    "Threads rendering bands of rows (default: all cores); the output is the same")
+                    "Threads (default: all cores): files at once, and bands of rows of a file; the "
+                    "output is the same")
         ->check(CLI::Range(1, 1024));
     const std::map<std::string, bool> pixels{{"float", false}, {"u8", true}};
     cmd->add_option("--pixels", a->u8,
