@@ -1,6 +1,6 @@
 // `casteljau render IN.svg... [--from-list FILE|-] -o OUT [--width W | --height H | --scale S]
 //   [--tolerance PX] [--flatten adaptive|uniform] [--segments N] [--antialias on|off]
-//   [--background COLOR] [--threads N] [--pixels float|u8] [--repeat N] [--stats FILE|-]`
+//   [--background COLOR] [--threads N] [--pixels auto|float|u8] [--repeat N] [--stats FILE|-]`
 //
 // One input renders to OUT (format from its extension); several inputs, a
 // list, or an OUT ending in '/' render into that folder as NAME.png, on
@@ -136,10 +136,13 @@ Command add_render_command(CLI::App& app) {
                     "Threads (default: all cores): files at once, and bands of rows of a file; the "
                     "output is the same")
         ->check(CLI::Range(1, 1024));
-    const std::map<std::string, bool> pixels{{"float", false}, {"u8", true}};
-    cmd->add_option("--pixels", a->u8,
-                    "float (default: exact compositing) or u8 (8 bits a channel, rounded at "
-                    "each composite as Cairo does; a quarter of the memory, faster)")
+    const std::map<std::string, RenderArgs::Pixels> pixels{{"auto", RenderArgs::Pixels::automatic},
+                                                           {"float", RenderArgs::Pixels::float32},
+                                                           {"u8", RenderArgs::Pixels::u8}};
+    cmd->add_option("--pixels", a->pixels,
+                    "auto (default: u8 for 8-bit files, float for EXR and TIFF), float (exact "
+                    "compositing) or u8 (8 bits a channel, rounded at each composite as Cairo "
+                    "does; a quarter of the memory, faster)")
         ->transform(CLI::CheckedTransformer(pixels, CLI::ignore_case));
     cmd->add_option("--repeat", a->repeat,
                     "Render the parsed scene N times; stage times are medians")

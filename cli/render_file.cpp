@@ -1,6 +1,7 @@
 #include "render_file.h"
 
 #include "casteljau/io/canvas_write.h"
+#include "casteljau/io/image_write.h"
 #include "casteljau/render/output_size.h"
 #include "commands.h"
 #include "json.h"
@@ -40,6 +41,19 @@ std::string record_head(const RenderJob& job, const FileOutcome& out) {
 
 } // namespace
 
+namespace {
+
+// The 8-bit canvas for an 8-bit file: a quarter of the memory traffic, and
+// each composite rounded once to the 8 bits the file keeps (within 0.2/255
+// of the float canvas on the examples, bench/README.md). Float files keep
+// the float canvas, which an 8-bit one would band.
+bool draws_u8(const RenderArgs& a, const std::string& output) noexcept {
+    if (a.pixels != RenderArgs::Pixels::automatic) return a.pixels == RenderArgs::Pixels::u8;
+    return !stores_float(output);
+}
+
+} // namespace
+
 int all_threads(const RenderArgs& a) {
     return a.threads > 0 ? a.threads : int(std::max(1u, std::thread::hardware_concurrency()));
 }
@@ -51,7 +65,7 @@ FileOutcome FileRenderer::render(const RenderJob& job, int threads, CanvasBudget
         if (!job.error.empty()) {
             out.status = kExitBadInput;
             out.log.fail(job.error);
-        } else if (a_.u8) {
+        } else if (draws_u8(a_, job.output)) {
             render_into(job, threads, canvas8_, budget, out);
         } else {
             render_into(job, threads, canvas_, budget, out);
@@ -129,7 +143,7 @@ void FileRenderer::render_into(const RenderJob& job, int threads, BasicCanvas<Pi
         ", \"frame_ms\": " + json_number(median(frame_ms)) +
         ", \"total_ms\": " + json_number(total_ms) + ", \"width\": " + std::to_string(w) +
         ", \"height\": " + std::to_string(h) + ", \"threads\": " + std::to_string(threads) +
-        ", \"pixels\": " + (a_.u8 ? "\"u8\"" : "\"float\"") +
+        ", \"pixels\": " + (draws_u8(a_, job.output) ? "\"u8\"" : "\"float\"") +
         ", \"repeat\": " + std::to_string(a_.repeat) + "}";
 }
 

@@ -25,7 +25,9 @@ struct RenderArgs {
     bool linear_light = false;
     std::string background;
     int threads = 0;
-    bool u8 = false; // --pixels u8: draw onto a Canvas8
+    // --pixels: the canvas drawn on. Auto (the default): 8 bits a channel
+    // for 8-bit files (PNG, JPEG), float for the float ones (EXR, TIFF).
+    enum class Pixels { automatic, float32, u8 } pixels = Pixels::automatic;
     int repeat = 1;
     std::string stats;
 };

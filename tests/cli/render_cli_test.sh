@@ -20,7 +20,7 @@ expect exclusive 2 'excludes' render "$data/ok.svg" -o "$tmp/x.png" --width 10 -
 # --stats: the fields of the contract, medians over --repeat. The stage
 # times are measured (a nonzero digit): the renderer reads its stage clocks
 # only when asked (RenderOptions::time_stages).
-expect stats 0 '"segments_in": [0-9]+, "segments_out": [0-9]+, "max_error_px": [0-9.e-]+, "parse_ms": [0-9.e-]+, "flatten_ms": [0-9.]*[1-9][0-9.e-]*, "raster_ms": [0-9.]*[1-9][0-9.e-]*, "encode_ms": [0-9.e-]+, "frame_ms": [0-9.e-]+, "total_ms": [0-9.e-]+, "width": 40, "height": 30, "threads": [0-9]+, "pixels": "float", "repeat": 5' \
+expect stats 0 '"segments_in": [0-9]+, "segments_out": [0-9]+, "max_error_px": [0-9.e-]+, "parse_ms": [0-9.e-]+, "flatten_ms": [0-9.]*[1-9][0-9.e-]*, "raster_ms": [0-9.]*[1-9][0-9.e-]*, "encode_ms": [0-9.e-]+, "frame_ms": [0-9.e-]+, "total_ms": [0-9.e-]+, "width": 40, "height": 30, "threads": [0-9]+, "pixels": "u8", "repeat": 5' \
     render "$data/ok.svg" -o "$tmp/s.png" --stats - --repeat 5
 # Threads: the same image bytes and the same counts as one thread.
 "$bin" render "$data/../../../examples/svg/opacity.svg" -o "$tmp/t1.png" --threads 1 --stats "$tmp/t1.json" 2>/dev/null
@@ -32,6 +32,9 @@ cmp -s "$tmp/t1.png" "$tmp/t3.png" && pass || fail "threads: images differ"
 "$bin" render "$data/../../../examples/svg/opacity.svg" -o "$tmp/u3.png" --pixels u8 --threads 3 2>/dev/null
 [[ -s "$tmp/u1.png" ]] && cmp -s "$tmp/u1.png" "$tmp/u3.png" && pass || fail "u8 threads: images differ"
 expect pixels_u8_stats 0 '"pixels": "u8"' render "$data/ok.svg" -o "$tmp/u.png" --pixels u8 --stats -
+# Auto (the default): the 8-bit canvas for 8-bit files, float for EXR and TIFF.
+expect pixels_exr_default 0 '"pixels": "float"' render "$data/ok.svg" -o "$tmp/u.exr" --stats -
+expect pixels_float_asked 0 '"pixels": "float"' render "$data/ok.svg" -o "$tmp/f.png" --pixels float --stats -
 expect pixels_bad 2 'pixels' render "$data/ok.svg" -o "$tmp/x.png" --pixels u16
 expect stats_file 0 '' render "$data/ok.svg" -o "$tmp/s.png" --stats "$tmp/stats.json"
 grep -q '"frame_ms"' "$tmp/stats.json" && pass || fail "stats file"
