@@ -10,6 +10,7 @@
 // the model at --view AZ,EL (default 35,25).
 #include "casteljau/io/atomic_file.h"
 #include "casteljau/io/canvas_write.h"
+#include "casteljau/io/image_read.h"
 #include "casteljau/io/mesh_write.h"
 #include "casteljau/io/patch_read.h"
 #include "casteljau/render3d/mesh_raster.h"
@@ -100,7 +101,8 @@ int run_patch(const PatchArgs& a) {
     Texture texture;
     if (a.texture != "checker" && a.texture != "none")
         if (const std::string err = texture.load(a.texture); !err.empty())
-            return fail(kExitBadInput, "--texture " + err);
+            // A missing OpenImageIO is the installation's failure, not the input's.
+            return fail(openimageio_available() ? kExitBadInput : kExitFailure, "--texture " + err);
     const PatchFile file = read_patch_file(a.input);
     if (!file.model) return fail(file.io_error ? kExitFailure : kExitBadInput, file.error);
     const PatchModel& model = *file.model;

@@ -45,9 +45,12 @@ TEST(ImageWrite, RoundTripsPngAndExrAndLeavesNoTemporaryFile) {
         auto in = OIIO::ImageInput::open(path);
         ASSERT_TRUE(in) << name;
         EXPECT_EQ(in->spec().width, 16);
-        EXPECT_EQ(in->spec().nchannels, 4);
-        std::vector<float> back(px.size());
-        ASSERT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, back.data()));
+        // The gradient is opaque: PNG stores it as RGB (alpha 1 implied).
+        const int channels = std::string(name) == "a.png" ? 3 : 4;
+        EXPECT_EQ(in->spec().nchannels, channels);
+        std::vector<float> back(px.size(), 1.0f);
+        ASSERT_TRUE(in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, back.data(),
+                                   4 * sizeof(float)));
         const float step = std::string(name) == "a.png" ? 0.5f / 255 + 1e-6f : 1e-6f;
         for (std::size_t i = 0; i < px.size(); ++i) ASSERT_NEAR(back[i], px[i], step) << name << i;
     }

@@ -34,9 +34,10 @@ def run_cli(cli, *args, check=True):
 
 
 def decode_png(path):
-    """An (H, W, 4) uint8 array of a PNG's straight RGBA pixels (PIL: python3-pil)."""
+    """An (H, W, 4) uint8 array of a PNG's straight RGBA pixels (PIL: python3-pil).
+    An opaque image is written as RGB: its alpha is 255."""
     import numpy as np
     Image = pytest.importorskip("PIL.Image", reason="PIL is not installed (python3-pil)")
     with Image.open(path) as im:
-        assert im.mode == "RGBA", im.mode
-        return np.asarray(im).copy()
+        assert im.mode in ("RGBA", "RGB"), im.mode
+        return np.asarray(im.convert("RGBA")).copy()

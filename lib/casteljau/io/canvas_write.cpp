@@ -1,6 +1,7 @@
 #include "casteljau/io/canvas_write.h"
 
 #include "casteljau/io/image_write.h"
+#include "casteljau/io/png_write.h"
 #include "casteljau/paint/straight_rgba.h"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <new>
 #include <vector>
 
 namespace casteljau {
@@ -28,7 +30,16 @@ std::string write_canvas_atomic(const std::string& path, const BasicCanvas<Pixel
     const bool exr = ext == ".exr", jpeg = ext == ".jpg" || ext == ".jpeg";
     const int w = canvas.width(), h = canvas.height();
     const std::size_t values = std::size_t(w) * std::size_t(h) * 4;
-    if (!stores_float(path)) { // PNG, JPEG, ...: straight 8-bit values, rounded by straight_rgba8
+    if (ext == ".png") { // straight 8-bit values, converted into the encoder's rows
+        try {
+            PngRows rows(w, h);
+            for (int y = 0; y < h; ++y) straight_row8(canvas.row(y), w, rows.rgba(y));
+            return write_png_atomic(path, std::move(rows));
+        } catch (const std::bad_alloc&) {
+            return path + ": out of memory";
+        }
+    }
+    if (!stores_float(path)) { // JPEG, ...: straight 8-bit values, rounded by straight_rgba8
         std::vector<std::uint8_t> out(values);
         straight_rgba8(canvas, out, jpeg);
         return write_image_atomic(path, {.width = w, .height = h, .rgba8 = out});

@@ -10,7 +10,9 @@
 //   convention (the sRGB transfer function is undone channel by channel).
 // * JPEG has no alpha: the image is flattened onto white first.
 // The image is handed over labelled straight or premultiplied accordingly;
-// writes are atomic (see image_write.h).
+// writes are atomic (see image_write.h). PNG is converted straight into the
+// rows of the library's own encoder (png_write.h), with no other copy of the
+// image; the other formats go through OpenImageIO, loaded when first needed.
 #pragma once
 
 #include "casteljau/paint/canvas.h"

@@ -1,5 +1,6 @@
-// Decoding PNG, JPEG, GIF, WebP and TIFF with OpenImageIO into premultiplied
-// float RasterImages.
+// Decoding PNG (libpng, io/detail/png_read.h), JPEG, GIF, WebP and TIFF
+// (OpenImageIO, through its module: io/detail/oiio_module.h) into
+// premultiplied float RasterImages.
 //
 // Format: found from the signature (PNG, ISO/IEC 15948 5.2; JPEG's SOI
 // marker FF D8 FF, ITU T.81 B.1.1.3; GIF87a/GIF89a, GIF89a 17; RIFF....WEBP,
@@ -28,8 +29,9 @@
 // image-orientation: from-image, the initial value), and so does this reader.
 #include "casteljau/io/image_read.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include "casteljau/io/detail/oiio_module.h"
+#include "casteljau/io/detail/png_read.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <exception>
@@ -131,10 +133,37 @@ RasterImage oriented(const RasterImage& in, int orientation) {
     return out;
 }
 
+/// An image opened for reading, or the error.
+struct Opened {
+    std::unique_ptr<detail::ImageReader> reader;
+    std::string error;
+};
+
+/// PNG with the library's own reader, every other format with OIIO's (its
+/// module loaded on first use).
+Opened open_reader(const char* format, const std::string& name,
+                   std::span<const unsigned char> memory, bool from_memory) {
+    if (std::string_view(format) == "png") {
+        detail::PngOpened png = detail::open_png(name, memory, from_memory);
+        if (!png.reader) return {nullptr, "cannot decode: " + png.error};
+        return {std::move(png.reader), {}};
+    }
+    const detail::OiioModule& oiio = detail::oiio_module();
+    if (!oiio.codec) return {nullptr, detail::oiio_missing(std::string("decoding ") + format)};
+    detail::OiioOpened opened = oiio.codec->open(format, name, memory, from_memory, true);
+    if (!opened.reader)
+        return {nullptr, (opened.no_reader ? std::string("no ") + format + " reader: "
+                                           : std::string("cannot decode: ")) +
+                             one_line(opened.error)};
+    return {std::move(opened.reader), {}};
+}
+
 /// Decodes with the reader that `head` (the first bytes) calls for, from
-/// `name` or, when `proxy` is set, from memory. Errors without a source.
+/// the file `name` or, when `from_memory`, from `memory`. Errors without a
+/// source.
 ImageReadResult decode(std::span<const unsigned char> head, const std::string& name,
-                       OIIO::Filesystem::IOProxy* proxy, std::size_t max_pixels) {
+                       std::span<const unsigned char> memory, bool from_memory,
+                       std::size_t max_pixels) {
     ImageReadResult r;
     const char* format = sniff_format(head);
     if (!format) {
@@ -155,23 +184,16 @@ ImageReadResult decode(std::span<const unsigned char> head, const std::string& n
     // Decoders throw too (OIIO 2.4's GIF reader: std::length_error on a
     // 65535 x 65535 screen), and allocations can fail.
     try {
-        auto in = OIIO::ImageInput::create(format);
-        if (!in) {
-            r.error = std::string("no ") + format + " reader: " + one_line(OIIO::geterror());
+        Opened opened = open_reader(format, name, memory, from_memory);
+        if (!opened.reader) {
+            r.error = std::move(opened.error);
             return r;
         }
-        OIIO::ImageSpec config;
-        config.attribute("oiio:UnassociatedAlpha", 1);
-        if (proxy) config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-        OIIO::ImageSpec spec;
-        if (!in->open(name, spec, config)) {
-            r.error = "cannot decode: " + one_line(in->geterror());
-            return r;
-        }
-        if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.nchannels <= 0) {
+        const detail::ImageHeader& spec = opened.reader->header();
+        if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.channels <= 0) {
             r.error = "image of " + std::to_string(spec.width) + " x " +
                       std::to_string(spec.height) + " x " + std::to_string(spec.depth) +
-                      " pixels and " + std::to_string(spec.nchannels) + " channels not supported";
+                      " pixels and " + std::to_string(spec.channels) + " channels not supported";
             return r;
         }
         const std::uint64_t w = std::uint64_t(spec.width), h = std::uint64_t(spec.height);
@@ -179,17 +201,18 @@ ImageReadResult decode(std::span<const unsigned char> head, const std::string& n
             r.error = size_error(w, h, max_pixels);
             return r;
         }
-        const bool straight = spec.get_int_attribute("oiio:UnassociatedAlpha", 0) != 0;
-        const int orientation = spec.get_int_attribute("Orientation", 1);
+        const bool straight = spec.straight;
+        const int orientation = spec.orientation;
         RasterImage img;
         img.width = spec.width, img.height = spec.height;
         img.pixels.resize(std::size_t(w * h));
         // Straight into the Premul pixels, each channel to its float: gray
         // lands in r (and alpha in g), expanded below.
-        const int channels = std::min(spec.nchannels, 4);
-        if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, img.pixels.data(),
-                            sizeof(Premul))) {
-            r.error = "cannot decode: " + one_line(in->geterror());
+        const int channels = std::min(spec.channels, 4);
+        if (std::string e = opened.reader->read(
+                channels, reinterpret_cast<float*>(img.pixels.data()), sizeof(Premul));
+            !e.empty()) {
+            r.error = "cannot decode: " + one_line(e);
             return r;
         }
         for (Premul& p : img.pixels) {
@@ -217,14 +240,14 @@ ImageReadResult read_image_file(const std::string& path, std::size_t max_pixels)
     if (!file) return {nullptr, path + ": cannot open the file"};
     file.read(reinterpret_cast<char*>(head), kHeadBytes);
     if (file.bad()) return {nullptr, path + ": cannot read the file"};
-    ImageReadResult r = decode({head, std::size_t(file.gcount())}, path, nullptr, max_pixels);
+    ImageReadResult r = decode({head, std::size_t(file.gcount())}, path, {}, false, max_pixels);
     if (!r.error.empty()) r.error = path + ": " + r.error;
     return r;
 }
 
 ImageReadResult decode_image(std::span<const unsigned char> bytes, std::size_t max_pixels) {
-    OIIO::Filesystem::IOMemReader memory(bytes.data(), bytes.size());
-    return decode(bytes.first(std::min(bytes.size(), kHeadBytes)), "memory", &memory, max_pixels);
+    return decode(bytes.first(std::min(bytes.size(), kHeadBytes)), "memory", bytes, true,
+                  max_pixels);
 }
 
 } // namespace casteljau

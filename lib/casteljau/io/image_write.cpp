@@ -1,11 +1,15 @@
 #include "casteljau/io/image_write.h"
 
 #include "casteljau/io/atomic_file.h"
+#include "casteljau/io/detail/oiio_module.h"
+#include "casteljau/io/png_write.h"
+#include "casteljau/paint/straight_rgba.h"
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <memory>
+#include <new>
 #include <span>
 #include <system_error>
 #include <utility>
@@ -35,63 +39,105 @@ std::vector<float> premultiplied(std::span<const float> rgba) {
     return out;
 }
 
+bool is_png(std::string ext) {
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return ext == ".png";
+}
+
+/// One byte of PNG's straight values: rounded as channel_to_u8 does (as OIIO
+/// did when it wrote PNG); premultiplied values divided by alpha in float
+/// first (OIIO divided the rounded bytes, losing faint colors).
+void straight_bytes(const float* v, Alpha alpha, std::uint8_t* out) {
+    Rgba c{v[0], v[1], v[2], v[3]};
+    if (alpha == Alpha::premultiplied) c = straight_of({v[0], v[1], v[2], v[3]});
+    out[0] = channel_to_u8(c.r), out[1] = channel_to_u8(c.g);
+    out[2] = channel_to_u8(c.b), out[3] = channel_to_u8(c.a);
+}
+
+/// PNG by the library's own encoder.
+std::string write_png(const std::string& path, const ImageView& image) {
+    const bool bytes_in = image.rgba.empty();
+    const std::size_t n = std::size_t(std::max(image.width, 0)) * 4;
+    const std::size_t values = bytes_in ? image.rgba8.size() : image.rgba.size();
+    if (image.width <= 0 || image.height <= 0 || values != n * std::size_t(image.height))
+        return path + ": cannot write a " + std::to_string(image.width) + " x " +
+               std::to_string(image.height) + " image from " + std::to_string(values) + " values";
+    try {
+        PngRows rows(image.width, image.height);
+        for (int y = 0; y < image.height; ++y) {
+            std::uint8_t* out = rows.rgba(y);
+            const std::size_t at = std::size_t(y) * n;
+            if (bytes_in && image.alpha == Alpha::straight) {
+                std::copy_n(image.rgba8.data() + at, n, out);
+                continue;
+            }
+            for (std::size_t i = 0; i < n; i += 4) {
+                float v[4];
+                for (std::size_t c = 0; c < 4; ++c)
+                    v[c] =
+                        bytes_in ? float(image.rgba8[at + i + c]) / 255.0f : image.rgba[at + i + c];
+                straight_bytes(v, image.alpha, out + i);
+            }
+        }
+        return write_png_atomic(path, std::move(rows));
+    } catch (const std::bad_alloc&) {
+        return path + ": out of memory";
+    }
+}
+
 } // namespace
 
 bool stores_float(const std::string& path) {
     return wants_float(fs::path(path).extension().string());
 }
 
-// Encodes with OIIO, either into memory (an I/O proxy) that
-// write_file_atomic then writes with every step checked, or straight into the
-// temporary file. Memory for PNG, JPEG and EXR: their encoders do not all
-// report a failed write (the PNG writer ignores one; libjpeg's default handler
-// exits the process). The file for TIFF: OIIO 2.4's memory proxy produces a
-// TIFF whose directory offset is wrong, and libtiff reports failed writes.
+// Encoded by OIIO (the module) either into memory, which write_file_atomic
+// then writes with every step checked, or straight into the temporary file.
+// Memory for JPEG and EXR: their encoders do not all report a failed write
+// (libjpeg's default handler exits the process). The file for TIFF: OIIO
+// 2.4's memory proxy produces a TIFF whose directory offset is wrong, and
+// libtiff reports failed writes.
 std::string write_image_atomic(const std::string& path, const ImageView& image) {
     const fs::path dest(path);
     std::error_code ec;
     if (fs::is_directory(dest, ec)) return path + ": is a folder, not a file";
     const std::string ext = dest.extension().string();
+    if (is_png(ext)) return write_png(path, image);
     const bool tiff = ext == ".tif" || ext == ".tiff" || ext == ".TIF" || ext == ".TIFF";
-    const fs::path target = tiff ? temporary_sibling(dest) : dest;
-    auto out = OIIO::ImageOutput::create(target.string());
-    if (!out) return path + ": no image writer for '" + ext + "' (" + OIIO::geterror() + ")";
-    std::vector<unsigned char> bytes;
-    OIIO::Filesystem::IOVecOutput memory(bytes);
-    if (!tiff && !(out->supports("ioproxy") && out->set_ioproxy(&memory)))
-        return path + ": the '" + ext + "' writer cannot encode into memory";
-    const OIIO::TypeDesc type = wants_float(ext) ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-    const bool jpeg = ext == ".jpg" || ext == ".jpeg" || ext == ".JPG" || ext == ".JPEG";
-    // JPEG has no alpha channel: its three channels are read with a 4-value stride.
-    OIIO::ImageSpec spec(image.width, image.height, jpeg ? 3 : 4, type);
     const bool exr = ext == ".exr" || ext == ".EXR";
-    spec.attribute("oiio:ColorSpace", exr ? "Linear" : "sRGB");
-    // Unlabelled, OIIO takes the values as premultiplied: PNG would divide them by alpha.
-    spec.attribute("oiio:UnassociatedAlpha", image.alpha == Alpha::straight ? 1 : 0);
+    const bool jpeg = ext == ".jpg" || ext == ".jpeg" || ext == ".JPG" || ext == ".JPEG";
+    const detail::OiioModule& oiio = detail::oiio_module();
+    if (!oiio.codec) return path + ": " + detail::oiio_missing("writing " + ext);
     // 8-bit values go to an 8-bit format untouched; a float format gets floats.
+    const bool float_file = wants_float(ext);
     const bool bytes_in = image.rgba.empty() && !image.rgba8.empty();
     std::vector<float> widened;
-    if (bytes_in && type == OIIO::TypeDesc::FLOAT) widened = to_float(image.rgba8);
+    if (bytes_in && float_file) widened = to_float(image.rgba8);
     const std::span<const float> rgba = widened.empty() ? image.rgba : widened;
-    // OIIO's EXR writer ignores that label (OpenEXR is premultiplied by definition).
+    // OIIO's EXR writer ignores the alpha label (OpenEXR is premultiplied by definition).
     std::vector<float> converted;
     if (exr && image.alpha == Alpha::straight) converted = premultiplied(rgba);
     const bool as_bytes = bytes_in && widened.empty();
     const void* pixels = as_bytes            ? static_cast<const void*>(image.rgba8.data())
                          : converted.empty() ? static_cast<const void*>(rgba.data())
                                              : static_cast<const void*>(converted.data());
-    const OIIO::TypeDesc given = as_bytes ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT;
-    const std::size_t pixel_bytes = as_bytes ? 4 : 4 * sizeof(float);
-    std::string error;
-    if (!out->open(target.string(), spec)) {
-        error = path + ": cannot write: " + out->geterror();
-    } else if (!out->write_image(given, pixels, OIIO::stride_t(pixel_bytes))) {
-        error = path + ": write failed: " + out->geterror();
+    const detail::OiioImage request{.width = image.width,
+                                    .height = image.height,
+                                    .channels = jpeg ? 3 : 4, // JPEG has no alpha channel
+                                    .float_file = float_file,
+                                    .float_pixels = !as_bytes,
+                                    .pixels = pixels,
+                                    .straight = image.alpha == Alpha::straight,
+                                    .linear = exr};
+    if (tiff) {
+        const fs::path tmp = temporary_sibling(dest);
+        std::string error = oiio.codec->write(tmp.string(), request, nullptr);
+        return finish_temporary(tmp, dest, error.empty() ? error : path + ": " + error);
     }
-    if (!out->close() && error.empty()) error = path + ": write failed: " + out->geterror();
-    out.reset();
-    if (tiff) return finish_temporary(target, dest, std::move(error));
-    if (!error.empty()) return error;
+    std::vector<unsigned char> bytes;
+    if (std::string error = oiio.codec->write(path, request, &bytes); !error.empty())
+        return path + ": " + error;
     return write_file_atomic(dest, {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
 }
 

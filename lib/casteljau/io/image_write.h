@@ -1,4 +1,6 @@
-// Writing images through OpenImageIO, atomically.
+// Writing images, atomically: PNG by the library's own encoder
+// (png_write.h), every other format through OpenImageIO, loaded on first use
+// (io/detail/oiio_module.h; without it such a write fails with a message).
 //
 // The format follows the file extension (png, tif/tiff, exr, jpg/jpeg; anything
 // else OpenImageIO knows). 8-bit formats get float values quantised with
@@ -10,15 +12,15 @@
 // existing file stays untouched until the new one is whole.
 //
 // The caller states whether the pixels are straight or premultiplied, and the
-// file's alpha is made to agree with that, for every format. OpenImageIO takes
-// a buffer as premultiplied unless told otherwise, and its PNG writer then
-// divides by alpha to store PNG's straight values: straight values must be
-// labelled so, or they are divided twice. (That division comes after rounding
-// to 8 bits, so faint pixels lose their color: give PNG straight values.) TIFF
-// records the convention in its ExtraSamples tag and keeps the values as given.
-// OpenEXR files are premultiplied by definition and OpenImageIO's EXR writer
-// ignores the label, so straight pixels are premultiplied here for EXR. JPEG
-// has no alpha and drops it: flatten the image first.
+// file's alpha is made to agree with that, for every format. PNG stores
+// straight values: premultiplied ones are divided by alpha in float before
+// rounding (dividing rounded bytes would lose the color of faint pixels).
+// OpenImageIO takes a buffer as premultiplied unless told otherwise: straight
+// values are labelled so. TIFF records the convention in its ExtraSamples tag
+// and keeps the values as given. OpenEXR files are premultiplied by
+// definition and OpenImageIO's EXR writer ignores the label, so straight
+// pixels are premultiplied here for EXR. JPEG has no alpha and drops it:
+// flatten the image first.
 #pragma once
 
 #include <cstdint>

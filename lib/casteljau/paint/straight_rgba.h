@@ -55,4 +55,9 @@ template <class Pixel>
 void straight_rgba8(const BasicCanvas<Pixel>& canvas, std::span<std::uint8_t> out,
                     bool onto_white = false);
 
+/// One row of straight_rgba8: `width` pixels from `src` to 4 bytes each
+/// from `out` on (for a caller whose rows are not contiguous).
+template <class Pixel>
+void straight_row8(const Pixel* src, int width, std::uint8_t* out, bool onto_white = false);
+
 } // namespace casteljau

@@ -1,6 +1,7 @@
 #include "casteljau/render3d/texture.h"
 
-#include <OpenImageIO/imageio.h>
+#include "casteljau/io/detail/oiio_module.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -31,26 +32,29 @@ float srgb_to_linear(float c) {
 } // namespace
 
 std::string Texture::load(const std::string& path) {
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) return path + ": cannot read the texture (" + OIIO::geterror() + ")";
-    const OIIO::ImageSpec& spec = in->spec();
+    const detail::OiioModule& oiio = detail::oiio_module();
+    if (!oiio.codec) return path + ": " + detail::oiio_missing("reading a texture");
+    // Any format OIIO reads; alpha, unused, as OIIO gives it (premultiplied).
+    detail::OiioOpened in = oiio.codec->open(nullptr, path, {}, false, false);
+    if (!in.reader) return path + ": cannot read the texture (" + in.error + ")";
+    const detail::ImageHeader& spec = in.reader->header();
     // The same pixel limits as output images: 16384 a side, 2^26 pixels.
     if (spec.width < 1 || spec.height < 1 || spec.width > 16384 || spec.height > 16384 ||
         double(spec.width) * spec.height > double(1 << 26))
         return path + ": texture size " + std::to_string(spec.width) + " x " +
                std::to_string(spec.height) + " is outside 1..16384 a side, 2^26 pixels";
-    const int channels = spec.nchannels;
+    const int channels = spec.channels;
     std::vector<float> data(std::size_t(spec.width) * spec.height * channels);
-    if (!in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, data.data()))
-        return path + ": cannot read the texture (" + in->geterror() + ")";
-    const bool linear = spec.get_string_attribute("oiio:ColorSpace") == "Linear";
+    if (const std::string e = in.reader->read(channels, data.data(), sizeof(float) * channels);
+        !e.empty())
+        return path + ": cannot read the texture (" + e + ")";
     w_ = spec.width;
     h_ = spec.height;
     px_.resize(std::size_t(w_) * h_);
     for (std::size_t i = 0; i < px_.size(); ++i) {
         const float* p = &data[i * channels];
         float c[3] = {p[0], p[channels > 1 ? 1 : 0], p[channels > 2 ? 2 : 0]};
-        for (float& v : c) v = std::clamp(linear ? v : srgb_to_linear(v), 0.0f, 1.0f);
+        for (float& v : c) v = std::clamp(spec.linear ? v : srgb_to_linear(v), 0.0f, 1.0f);
         px_[i] = {c[0], c[1], c[2]};
     }
     return {};

@@ -5,7 +5,8 @@
 //   quotient of its integral, a triangle wave, and the 2D checker is the
 //   product of two square waves, so its filtered value is the product of the
 //   two filtered ones. No aliasing moire at grazing angles, no mip maps.
-// * Image: read through OpenImageIO, stored linear, looked up bilinearly and
+// * Image: read through OpenImageIO (its module, loaded on first use:
+//   io/detail/oiio_module.h), stored linear, looked up bilinearly and
 //   repeated in both directions (s = 0..1 spans the image once). No mip maps:
 //   minified image textures alias.
 // Values are linear-light RGB albedo in [0, 1].

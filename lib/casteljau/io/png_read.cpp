@@ -1,0 +1,170 @@
+#include "casteljau/io/detail/png_read.h"
+
+#include <cstdio>
+#include <cstring>
+#include <png.h>
+#include <vector>
+
+namespace casteljau::detail {
+
+namespace {
+
+// The 8- and 16-bit sample scales of OIIO's integer-to-float conversion
+// (convert_type: v * (1 / max)), so that the floats are the ones it gave.
+constexpr float kScale8 = 1.0f / 255.0f, kScale16 = 1.0f / 65535.0f;
+
+// TIFF 6.0, 8: the Orientation tag, of type SHORT (3).
+constexpr unsigned kOrientationTag = 0x0112, kShort = 3;
+
+/// What libpng's callbacks share: the input, and the last error message.
+struct Source {
+    std::FILE* file = nullptr;
+    const unsigned char* data = nullptr;
+    std::size_t size = 0, pos = 0;
+    char error[256] = {};
+};
+
+// libpng reports errors here and expects no return: it longjmps to the
+// setjmp of the function that called it.
+void on_error(png_structp png, png_const_charp message) {
+    auto* s = static_cast<Source*>(png_get_error_ptr(png));
+    std::snprintf(s->error, sizeof s->error, "%s", message);
+    png_longjmp(png, 1);
+}
+
+void on_warning(png_structp, png_const_charp) {} // ancillary trouble: the image is still good
+
+void read_memory(png_structp png, png_bytep out, png_size_t n) {
+    auto* s = static_cast<Source*>(png_get_io_ptr(png));
+    if (n > s->size - s->pos) png_error(png, "the data ends before the image does");
+    std::memcpy(out, s->data + s->pos, n);
+    s->pos += n;
+}
+
+/// The Orientation (1 to 8) in the TIFF structure an eXIf chunk holds
+/// (PNG 3rd edition, 11.3.6.1; TIFF 6.0, 2: byte order, 42, the first IFD's
+/// offset; an IFD: a count of 12-byte entries tag, type, count, value);
+/// 1 when it has none or is malformed.
+int exif_orientation(const unsigned char* d, std::size_t n) {
+    if (n < 8 || !((d[0] == 'I' && d[1] == 'I') || (d[0] == 'M' && d[1] == 'M'))) return 1;
+    const bool le = d[0] == 'I';
+    const auto u16 = [&](std::size_t i) {
+        return le ? unsigned(d[i] | d[i + 1] << 8) : unsigned(d[i] << 8 | d[i + 1]);
+    };
+    const auto u32 = [&](std::size_t i) {
+        return le ? u16(i) | std::size_t(u16(i + 2)) << 16 : std::size_t(u16(i)) << 16 | u16(i + 2);
+    };
+    if (u16(2) != 42) return 1;
+    const std::size_t ifd = u32(4);
+    if (ifd > n - 2) return 1;
+    const std::size_t entries = u16(ifd);
+    for (std::size_t k = 0; k < entries; ++k) {
+        const std::size_t e = ifd + 2 + 12 * k;
+        if (e + 12 > n) break;
+        if (u16(e) != kOrientationTag) continue;
+        const unsigned v = u16(e + 8); // a SHORT sits at the start of the value field
+        return u16(e + 2) == kShort && u32(e + 4) >= 1 && v >= 1 && v <= 8 ? int(v) : 1;
+    }
+    return 1;
+}
+
+// The two functions below call libpng, whose errors longjmp back to their
+// setjmp: they hold no object with a destructor.
+
+/// Reads the chunks before the image data and sets the transforms; fills
+/// `h`. False on error.
+bool read_header(png_structp png, png_infop info, ImageHeader& h, int& bit_depth) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_read_info(png, info);
+    png_set_expand(png); // palette to RGB, gray below 8 bits to 8, tRNS to alpha
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    h.width = int(png_get_image_width(png, info));
+    h.height = int(png_get_image_height(png, info));
+    h.depth = 1;
+    h.channels = png_get_channels(png, info);
+    h.straight = true;
+    bit_depth = png_get_bit_depth(png, info);
+    png_uint_32 size = 0;
+    png_bytep exif = nullptr;
+    if (png_get_eXIf_1(png, info, &size, &exif) && exif)
+        h.orientation = exif_orientation(exif, size);
+    return true;
+}
+
+/// Decodes every row, then the chunks after them (their CRCs checked, as
+/// OIIO's reader did). False on error.
+bool read_rows(png_structp png, png_bytepp rows) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_read_image(png, rows);
+    png_read_end(png, nullptr);
+    return true;
+}
+
+class PngReader final : public ImageReader {
+  public:
+    ~PngReader() override {
+        png_destroy_read_struct(&png_, &info_, nullptr);
+        if (source_.file) std::fclose(source_.file);
+    }
+    const ImageHeader& header() const override { return header_; }
+
+    std::string read(int channels, float* out, std::size_t stride) override {
+        const std::size_t w = std::size_t(header_.width), h = std::size_t(header_.height);
+        const std::size_t row_bytes = png_get_rowbytes(png_, info_);
+        std::vector<unsigned char> bytes(row_bytes * h);
+        std::vector<png_bytep> rows(h);
+        for (std::size_t y = 0; y < h; ++y) rows[y] = bytes.data() + y * row_bytes;
+        if (!read_rows(png_, rows.data())) return source_.error;
+        const std::size_t n = std::size_t(header_.channels);
+        for (std::size_t y = 0; y < h; ++y)
+            for (std::size_t x = 0; x < w; ++x) {
+                auto* dst =
+                    reinterpret_cast<float*>(reinterpret_cast<char*>(out) + (y * w + x) * stride);
+                const unsigned char* src = rows[y] + x * n * (bit_depth_ == 16 ? 2 : 1);
+                for (std::size_t c = 0; c < std::size_t(channels); ++c)
+                    dst[c] = bit_depth_ == 16 ? float(src[2 * c] << 8 | src[2 * c + 1]) * kScale16
+                                              : float(src[c]) * kScale8;
+            }
+        return {};
+    }
+
+    Source source_;
+    png_structp png_ = nullptr;
+    png_infop info_ = nullptr;
+    ImageHeader header_;
+    int bit_depth_ = 8;
+};
+
+} // namespace
+
+PngOpened open_png(const std::string& name, std::span<const unsigned char> memory,
+                   bool from_memory) {
+    PngOpened r;
+    auto reader = std::make_unique<PngReader>();
+    Source& s = reader->source_;
+    if (from_memory) {
+        s.data = memory.data(), s.size = memory.size();
+    } else if (!(s.file = std::fopen(name.c_str(), "rb"))) {
+        r.error = "cannot open the file";
+        return r;
+    }
+    reader->png_ = png_create_read_struct(PNG_LIBPNG_VER_STRING, &s, on_error, on_warning);
+    if (reader->png_) reader->info_ = png_create_info_struct(reader->png_);
+    if (!reader->info_) {
+        r.error = "out of memory";
+        return r;
+    }
+    if (from_memory)
+        png_set_read_fn(reader->png_, &s, read_memory);
+    else
+        png_init_io(reader->png_, s.file);
+    if (!read_header(reader->png_, reader->info_, reader->header_, reader->bit_depth_)) {
+        r.error = s.error;
+        return r;
+    }
+    r.reader = std::move(reader);
+    return r;
+}
+
+} // namespace casteljau::detail
