@@ -81,7 +81,7 @@ def _source(source):
 
 
 def render_svg(source, *, width=None, height=None, scale=None, background=None,
-               tolerance=0.25, threads=0, pixels="u8", strict=False, canvas="float",
+               tolerance=0.25, threads=0, pixels="u8", strict=False, canvas="auto",
                method="guided", segments=None, antialias=True, gradient_interpolation="srgb"):
     """Renders an SVG document to a NumPy array of straight RGBA pixels.
 
@@ -105,8 +105,9 @@ def render_svg(source, *, width=None, height=None, scale=None, background=None,
         (straight RGBA in [0, 1], before 8-bit rounding).
       strict: the first problem in the file is an error (ValueError) instead
         of a warning and the specs' recovery.
-      canvas: the canvas drawn on, as the CLI's --pixels: "float" (exact) or
-        "u8" (8 bits a channel, as Cairo and Skia draw).
+      canvas: the canvas drawn on, as the CLI's --pixels: "auto" (the default:
+        "u8" for u8 arrays, as the CLI's PNG, "float" for float32 ones),
+        "float" (exact) or "u8" (8 bits a channel, as Cairo and Skia draw).
       method, segments: the flattening method ("guided", "adaptive",
         "uniform", "halving") and, for "uniform", segments per curve.
       antialias: exact-area coverage (True) or pixel centres (False).
@@ -129,7 +130,7 @@ def render_svg(source, *, width=None, height=None, scale=None, background=None,
 
 
 def render_file(source_path, output_path, *, width=None, height=None, scale=None,
-                background=None, tolerance=0.25, threads=1, pixels="float", strict=False,
+                background=None, tolerance=0.25, threads=1, pixels="auto", strict=False,
                 method="guided", segments=None, antialias=True, gradient_interpolation="srgb"):
     """Renders an SVG file to an image file, as ``casteljau render IN -o OUT``.
 
@@ -137,7 +138,8 @@ def render_file(source_path, output_path, *, width=None, height=None, scale=None
     file is written atomically (a complete new file replaces an existing one,
     or nothing is written). Options as render_svg's, except:
       threads: 1 by default (a batch runs files in parallel instead);
-      pixels: the canvas drawn on, as the CLI's --pixels: "float" or "u8".
+      pixels: the canvas drawn on, as the CLI's --pixels: "auto" (the default:
+        "u8" for 8-bit files, "float" for EXR and TIFF), "float" or "u8".
 
     Returns a dict: input, output, width, height, threads, pixels, parse_ms,
     frame_ms (one render of the parsed scene), encode_ms, total_ms and

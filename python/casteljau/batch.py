@@ -6,7 +6,7 @@ Usage::
         [--scheduler ADDRESS] [--resume] [--log FILE.jsonl] [--group-bytes B] [--group-files N]
         [--width W | --height H | --scale S] [--tolerance PX]
         [--flatten guided|adaptive|uniform|halving] [--segments N] [--antialias on|off]
-        [--gradient-interpolation srgb|linear] [--background COLOR] [--pixels float|u8]
+        [--gradient-interpolation srgb|linear] [--background COLOR] [--pixels auto|float|u8]
         [--strict] [--format png|tif|exr|jpg] [--render-threads N]
 
 The same render as ``casteljau render IN.svg -o OUT.png`` (same options, same pixels: every
@@ -254,8 +254,9 @@ def build_parser():
     r.add_argument("--gradient-interpolation", choices=("srgb", "linear"),
                    help="srgb (default) or linear")
     r.add_argument("--background", metavar="COLOR", help="background color (default transparent)")
-    r.add_argument("--pixels", choices=("float", "u8"), default="float",
-                   help="the canvas: float (exact, default) or u8 (8 bits a channel)")
+    r.add_argument("--pixels", choices=("auto", "float", "u8"), default="auto",
+                   help="the canvas: auto (default: u8 for 8-bit formats, float for exr and "
+                        "tif), float (exact) or u8 (8 bits a channel)")
     r.add_argument("--strict", action="store_true",
                    help="the first problem in a file is an error (no image)")
     r.add_argument("--format", choices=("png", "tif", "exr", "jpg"), default="png",

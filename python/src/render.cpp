@@ -8,6 +8,7 @@
 // straight-RGBA conversion the PNG writer uses (paint/straight_rgba.h). The
 // GIL is released around reading, rendering, converting and writing.
 #include "casteljau/io/canvas_write.h"
+#include "casteljau/io/image_write.h"
 #include "casteljau/paint/straight_rgba.h"
 #include "casteljau/render/bands.h"
 #include "casteljau/render/output_size.h"
@@ -120,7 +121,9 @@ py::tuple render_svg(std::optional<std::string> path, std::optional<std::string>
                      const std::string& pixels, const std::string& canvas, bool strict,
                      const std::string& method, std::optional<int> segments, bool antialias,
                      const std::string& gradient_interpolation) {
-    const Request r = make_request(width, height, scale, background, tolerance, threads, canvas,
+    // Auto: the canvas of the array's type, as the CLI's for a file's.
+    const std::string drawn_on = canvas != "auto" ? canvas : pixels == "float32" ? "float" : "u8";
+    const Request r = make_request(width, height, scale, background, tolerance, threads, drawn_on,
                                    strict, method, segments, antialias, gradient_interpolation);
     if (pixels != "u8" && pixels != "float32")
         value_error("pixels '" + pixels + "': expected 'u8' or 'float32'");
@@ -155,7 +158,9 @@ py::dict render_file(const std::string& input, const std::string& output,
                      std::optional<int> segments, bool antialias,
                      const std::string& gradient_interpolation) {
     const auto t0 = Clock::now();
-    const Request r = make_request(width, height, scale, background, tolerance, threads, pixels,
+    // Auto: the CLI's --pixels auto, 8-bit for 8-bit files, float for EXR and TIFF.
+    const std::string drawn_on = pixels != "auto" ? pixels : stores_float(output) ? "float" : "u8";
+    const Request r = make_request(width, height, scale, background, tolerance, threads, drawn_on,
                                    strict, method, segments, antialias, gradient_interpolation);
     std::vector<std::string> warnings;
     const Scene scene = load(r, &input, nullptr, input, warnings);
@@ -197,13 +202,13 @@ void bind_render(py::module_& m) {
     m.def("_render_svg", &render_svg, "path"_a, "text"_a, "name"_a, py::kw_only(),
           "width"_a = py::none(), "height"_a = py::none(), "scale"_a = py::none(),
           "background"_a = py::none(), "tolerance"_a = 0.25, "threads"_a = 0, "pixels"_a = "u8",
-          "canvas"_a = "float", "strict"_a = false, "method"_a = "guided",
+          "canvas"_a = "auto", "strict"_a = false, "method"_a = "guided",
           "segments"_a = py::none(), "antialias"_a = true, "gradient_interpolation"_a = "srgb",
           "Renders an SVG file (path) or text (with `name` for messages); returns (array, "
           "warnings). See casteljau.render_svg.");
     m.def("_render_file", &render_file, "input"_a, "output"_a, py::kw_only(),
           "width"_a = py::none(), "height"_a = py::none(), "scale"_a = py::none(),
-          "background"_a = py::none(), "tolerance"_a = 0.25, "threads"_a = 1, "pixels"_a = "float",
+          "background"_a = py::none(), "tolerance"_a = 0.25, "threads"_a = 1, "pixels"_a = "auto",
           "strict"_a = false, "method"_a = "guided", "segments"_a = py::none(),
           "antialias"_a = true, "gradient_interpolation"_a = "srgb",
           "Renders an SVG file to an image file; returns the stats. See casteljau.render_file.");

@@ -54,8 +54,8 @@ def test_threads_do_not_change_the_pixels():
 
 def test_float32_rounds_to_the_u8_pixels():
     svg = EXAMPLES / "svg" / "opacity.svg"
-    f = casteljau.render_svg(svg, pixels="float32")
-    u = casteljau.render_svg(svg)
+    f = casteljau.render_svg(svg, pixels="float32")  # drawn on the float canvas (auto)
+    u = casteljau.render_svg(svg, canvas="float")
     assert f.dtype == np.float32 and f.shape == u.shape
     assert f.min() >= 0 and f.max() <= 1
     # The library's rounding: round(255 v), halves away from zero.
@@ -122,7 +122,7 @@ def test_render_file_writes_the_cli_image(cli, tmp_path):
                 "total_ms", "warnings"):
         assert key in stats, key
     assert (stats["width"], stats["height"]) == casteljau.render_svg(svg, scale=1.5).shape[1::-1]
-    assert stats["threads"] == 1 and stats["pixels"] == "float" and stats["warnings"] == []
+    assert stats["threads"] == 1 and stats["pixels"] == "u8" and stats["warnings"] == []
     assert 0 <= stats["parse_ms"] <= stats["total_ms"]
     assert stats["frame_ms"] > 0 and stats["encode_ms"] > 0
 

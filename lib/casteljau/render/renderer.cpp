@@ -28,7 +28,6 @@ void add_stage_ms(double& ms, const RenderOptions& o, Clock::time_point start) {
         ms += std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-
 } // namespace
 
 RenderStats& RenderStats::operator+=(const RenderStats& o) {
@@ -85,7 +84,7 @@ void Renderer::begin(const Affine& view, const RenderOptions& options, const Pix
     options_ = &options;
     stats_ = {};
     tile_of_ = nullptr; // a new scene may hold another pattern at the same address
-    layers_used_ = 0;
+    layers_used_ = {};
     layer_bytes_ = 0;
     layer_sizes_.clear();
     filter_depth_ = 0;
@@ -122,16 +121,18 @@ Target* Renderer::acquire_layer(int w, int h, int x0, int y0) {
     const std::size_t bytes = std::size_t(w) * std::size_t(h) * sizeof(typename Target::pixel_type);
     if (layer_bytes_ + bytes > layer_budget_) return nullptr;
     auto& layers = std::get<std::vector<std::unique_ptr<Target>>>(layers_);
-    if (int(layers.size()) <= layers_used_) layers.push_back(std::make_unique<Target>());
-    Target& l = *layers[std::size_t(layers_used_++)];
+    int& used = layers_used_[std::is_same_v<Target, Canvas8>];
+    if (int(layers.size()) <= used) layers.push_back(std::make_unique<Target>());
+    Target& l = *layers[std::size_t(used++)];
     l.reset(w, h, x0, y0);
     layer_bytes_ += bytes;
     layer_sizes_.push_back(bytes);
     return &l;
 }
 
+template <class Target>
 void Renderer::release_layer() {
-    --layers_used_;
+    --layers_used_[std::is_same_v<Target, Canvas8>];
     layer_bytes_ -= layer_sizes_.back();
     layer_sizes_.pop_back();
 }
@@ -190,7 +191,7 @@ void Renderer::mask_layer(const Mask& mask, Target& layer) {
     const auto t = stage_start(*options_);
     apply_mask(layer, *m, mask.kind);
     add_stage_ms(stats_.raster_ms, *options_, t);
-    release_layer();
+    release_layer<Target>();
 }
 
 template <class Target, class Draw>
@@ -216,7 +217,7 @@ void Renderer::in_layer(const Rect& b, Target& target, float opacity, BlendMode 
     const auto t = stage_start(*options_);
     composite_layer(target, *l, opacity, blend);
     add_stage_ms(stats_.raster_ms, *options_, t);
-    release_layer();
+    release_layer<Target>();
 }
 
 template <class Target>
@@ -444,7 +445,7 @@ bool Renderer::filter_layer(const Group& g, Target& layer) {
     frame_ = frame; // the content just outside the frame is drawn too
     draw_children(g, *src);
     to_filter_image(*src, buf.source);
-    release_layer();
+    release_layer<Target>();
     bool ok = true;
     for (std::size_t k = 0; ok && k < g.filters.size(); ++k) {
         const Filter* f = g.filters[k].get();
@@ -453,8 +454,8 @@ bool Renderer::filter_layer(const Group& g, Target& layer) {
         for (std::size_t i = 0; i < n; ++i) draw_filter_input(f->images[i], window, buf.inputs[i]);
         draw_filter_input(f->fill_paint, window, buf.inputs[n]);
         draw_filter_input(f->stroke_paint, window, buf.inputs[n + 1]);
-        const FilterSources io{&buf.source, {buf.inputs.data(), n}, &buf.inputs[n],
-                               &buf.inputs[n + 1], &buf.pool};
+        const FilterSources io{
+            &buf.source, {buf.inputs.data(), n}, &buf.inputs[n], &buf.inputs[n + 1], &buf.pool};
         const auto t = stage_start(*options_);
         ok = run_filter(f->graph, view_ * f->transform, io);
         add_stage_ms(stats_.raster_ms, *options_, t);
@@ -466,8 +467,8 @@ bool Renderer::filter_layer(const Group& g, Target& layer) {
     for (int y = out.y0; y < out.y1; ++y) {
         auto* row = layer.row(y - layer.origin_y());
         for (int x = out.x0; x < out.x1; ++x)
-            row[x - layer.origin_x()] = pixel_of<typename Target::pixel_type>(
-                buf.source.at(x - window.x0, y - window.y0));
+            row[x - layer.origin_x()] =
+                pixel_of<typename Target::pixel_type>(buf.source.at(x - window.x0, y - window.y0));
     }
     return true;
 }
@@ -482,7 +483,7 @@ void Renderer::draw_filter_input(const Group& content, const PixelRect& window, 
     }
     draw_group(content, *c);
     to_filter_image(*c, img);
-    release_layer();
+    release_layer<Canvas>();
 }
 
 // The two pixel formats a renderer draws onto.

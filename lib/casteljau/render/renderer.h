@@ -32,6 +32,7 @@
 #include "casteljau/scene/scene.h"
 #include "casteljau/stroke/stroker.h"
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <span>
@@ -158,6 +159,7 @@ class Renderer {
     /// Release in reverse order.
     template <class Target>
     Target* acquire_layer(int w, int h, int x0, int y0);
+    template <class Target>
     void release_layer();
 
     EdgeList edges_;
@@ -165,9 +167,13 @@ class Renderer {
     GradientShader gradient_shader_;   ///< its color table is reused across shapes
     Stroker stroker_;                  ///< stroke outlines, buffers reused across shapes
     StrokeGeometry hairline_geometry_; ///< a hairline's widened copy of its geometry
-    /// Layers in flight, a stack, per pixel format; the first layers_used_ are taken.
+    /// Layers in flight, a stack per pixel format; the first layers_used_[f]
+    /// of format f (0 float, 1 8-bit) are taken. One count per format: an
+    /// 8-bit frame's filter draws its input on float layers, and a shared
+    /// count indexed past the float layers there were (regression:
+    /// tests/svg/agreement/filter_primitives.svg on the 8-bit canvas).
     std::tuple<std::vector<std::unique_ptr<Canvas>>, std::vector<std::unique_ptr<Canvas8>>> layers_;
-    int layers_used_ = 0;
+    std::array<int, 2> layers_used_{};
     std::size_t layer_bytes_ = 0; ///< the pixels of the layers in flight
     std::size_t layer_budget_ = kMaxLayerBytes;
     std::vector<std::size_t> layer_sizes_; ///< each one's, a stack
