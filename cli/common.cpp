@@ -15,12 +15,14 @@ void add_tolerance_option(CLI::App* cmd, double& tolerance) {
 
 void add_flatten_options(CLI::App* cmd, FlattenOptions& o) {
     add_tolerance_option(cmd, o.tolerance);
-    const std::map<std::string, FlattenMethod> methods{{"guided", FlattenMethod::Guided},
+    const std::map<std::string, FlattenMethod> methods{{"integral", FlattenMethod::Integral},
+                                                       {"guided", FlattenMethod::Guided},
                                                        {"adaptive", FlattenMethod::Adaptive},
                                                        {"uniform", FlattenMethod::Uniform},
                                                        {"halving", FlattenMethod::Halving}};
     cmd->add_option("--flatten", o.method,
-                    "guided (default: fastest), adaptive (fewest segments), uniform, or halving "
+                    "integral (default: near the fewest segments, every chord checked), guided "
+                    "(fastest, about 1.3x the segments), adaptive (greedy), uniform, or halving "
                     "(textbook midpoint subdivision)")
         ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
     cmd->add_option(

@@ -1,5 +1,5 @@
-// `casteljau flatten --path DATA [--tolerance PX] [--flatten guided|adaptive|uniform|halving]
-//                    [--segments N] [--json]`
+// `casteljau flatten --path DATA [--tolerance PX]
+//                    [--flatten integral|guided|adaptive|uniform|halving] [--segments N] [--json]`
 // Flattens SVG path data (user units = device pixels) and reports the segment
 // count, the measured maximum error and the flattening time per curve.
 #include "casteljau/curve/path_data.h"

@@ -1,4 +1,4 @@
-// Adaptive vs uniform flattening at equal measured error.
+// The flatteners against each other and uniform sampling at equal measured error.
 //
 // Corpus: testing::cubic_corpus (random cubics, quarter circles, S-curves,
 // loops, near-cusps, long nearly straight curves; seeded), also used by the
@@ -9,11 +9,13 @@
 //   Msegments_per_s     emitted segments per second
 //   max_error_px        the measured maximum error (error.h), taken once
 //   vs_optimal          segments / the optimal count (integral of sqrt(k / 8 tol) ds)
-// Methods: adaptive (adaptive.h), halving (textbook, halving.h), guided
-// (cut into the predicted number of pieces, guided.h), uniform_best
-// (per curve the smallest N whose measured error meets the tolerance: the
-// strongest uniform baseline, its N found before timing), uniform_wang (N from
-// Wang's bound, computed inside the timed loop, as a renderer would).
+// Methods: integral (the default: evenly spaced in the integral of the
+// segment density, every chord checked, integral.h), adaptive (adaptive.h),
+// halving (textbook, halving.h), guided (cut into the predicted number of
+// pieces, guided.h), uniform_best (per curve the smallest N whose measured
+// error meets the tolerance: the strongest uniform baseline, its N found
+// before timing), uniform_wang (N from Wang's bound, computed inside the
+// timed loop, as a renderer would).
 #include "casteljau/flatten/error.h"
 #include "casteljau/flatten/flatten.h"
 #include "corpus.h"
@@ -30,8 +32,9 @@ const std::vector<testing::NamedCubic>& corpus() {
     return c;
 }
 
-enum class Method { Adaptive, Halving, Guided, UniformBest, UniformWang };
-const char* const kNames[] = {"adaptive", "halving", "guided", "uniform_best", "uniform_wang"};
+enum class Method { Adaptive, Halving, Guided, UniformBest, UniformWang, Integral };
+const char* const kNames[] = {"adaptive",     "halving",      "guided",
+                              "uniform_best", "uniform_wang", "integral"};
 const double kTolerances[] = {1.0, 0.5, 0.25, 0.1};
 
 struct Prepared {
@@ -56,6 +59,9 @@ void flatten_one(const CubicBez& c, Method m, double tol, int best_n, Sink&& sin
         break;
     case Method::UniformWang:
         flatten_uniform(c, wang_segments(c, tol), sink);
+        break;
+    case Method::Integral:
+        flatten_integral(c, tol, sink);
         break;
     }
 }
@@ -121,15 +127,15 @@ void BM_FlattenKind(benchmark::State& state, Method m, std::string kind) {
 
 const int kRegistered = [] {
     for (double tol : kTolerances)
-        for (Method m : {Method::Adaptive, Method::Guided, Method::UniformBest, Method::UniformWang,
-                         Method::Halving})
+        for (Method m : {Method::Integral, Method::Adaptive, Method::Guided, Method::UniformBest,
+                         Method::UniformWang, Method::Halving})
             benchmark::RegisterBenchmark(("flatten/" + std::string(kNames[int(m)]) +
                                           "/tol:" + std::to_string(tol).substr(0, 4))
                                              .c_str(),
                                          BM_Flatten, m, tol);
     for (const char* kind :
          {"random", "quarter_circle", "s_curve", "loop", "near_cusp", "nearly_straight"})
-        for (Method m : {Method::Adaptive, Method::Guided, Method::UniformBest})
+        for (Method m : {Method::Integral, Method::Adaptive, Method::Guided, Method::UniformBest})
             benchmark::RegisterBenchmark(
                 ("kind/" + std::string(kind) + "/" + kNames[int(m)]).c_str(), BM_FlattenKind, m,
                 std::string(kind));

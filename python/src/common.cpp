@@ -55,11 +55,13 @@ double checked_tolerance(double tolerance) {
 FlattenMethod parse_method(const std::string& name) {
     std::string n = name;
     std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (n == "integral") return FlattenMethod::Integral;
     if (n == "guided") return FlattenMethod::Guided;
     if (n == "adaptive") return FlattenMethod::Adaptive;
     if (n == "uniform") return FlattenMethod::Uniform;
     if (n == "halving") return FlattenMethod::Halving;
-    value_error("method '" + name + "': expected 'guided', 'adaptive', 'uniform' or 'halving'");
+    value_error("method '" + name +
+                "': expected 'integral', 'guided', 'adaptive', 'uniform' or 'halving'");
 }
 
 FlattenOptions flatten_options(double tolerance, const std::string& method,

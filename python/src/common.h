@@ -40,7 +40,7 @@ Point to_point(py::handle h, const char* what);
 /// The flattening tolerance, checked as the CLI checks --tolerance ([1e-4, 1] px).
 double checked_tolerance(double tolerance);
 
-/// "guided", "adaptive", "uniform" or "halving" (any case); ValueError otherwise.
+/// "integral", "guided", "adaptive", "uniform" or "halving" (any case); ValueError otherwise.
 FlattenMethod parse_method(const std::string& name);
 
 /// FlattenOptions from the Python keywords; `segments` only with "uniform".

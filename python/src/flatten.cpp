@@ -15,6 +15,8 @@ using namespace pybind11::literals;
 
 const char* method_name(FlattenMethod m) {
     switch (m) {
+    case FlattenMethod::Integral:
+        return "integral";
     case FlattenMethod::Guided:
         return "guided";
     case FlattenMethod::Adaptive:
@@ -85,15 +87,15 @@ py::tuple flatten(py::handle path_or_d, double tolerance, const std::string& met
 } // namespace
 
 void bind_flatten(py::module_& m) {
-    m.def("flatten", &flatten, "path_or_d"_a, "tolerance"_a = 0.25, "method"_a = "guided",
+    m.def("flatten", &flatten, "path_or_d"_a, "tolerance"_a = 0.25, "method"_a = "integral",
           "segments"_a = py::none(), py::kw_only(), "transform"_a = py::none(),
           R"doc(
 Flattens a Path, or a string of SVG path data, into polylines within
 `tolerance` device pixels (in [1e-4, 1]) of the curves.
 
-method: 'guided' (default, fastest), 'adaptive' (fewest segments), 'uniform'
-(`segments` per curve, or without it the fewest Wang's bound allows) or
-'halving' (textbook midpoint subdivision). `transform` maps the path to
+method: 'integral' (default, near the fewest segments), 'guided' (fastest),
+'adaptive' (greedy), 'uniform' (`segments` per curve, or without it the fewest
+Wang's bound allows) or 'halving' (textbook midpoint subdivision). `transform` maps the path to
 device space first (default: path units are pixels).
 
 Returns (points, info): points is an (N, 2) float64 array of every

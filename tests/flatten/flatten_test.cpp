@@ -42,8 +42,9 @@ void expect_valid(const C& c, FlattenMethod m, double tol, const std::string& wh
     EXPECT_LE(r.error, tol + slack(c)) << what << " segments " << r.v.size();
 }
 
-const FlattenMethod kMethods[] = {FlattenMethod::Adaptive, FlattenMethod::Halving,
-                                  FlattenMethod::Guided, FlattenMethod::Uniform};
+const FlattenMethod kMethods[] = {FlattenMethod::Integral, FlattenMethod::Adaptive,
+                                  FlattenMethod::Halving, FlattenMethod::Guided,
+                                  FlattenMethod::Uniform};
 
 TEST(Flatten, ErrorWithinToleranceForThousandsOfRandomCurves) {
     testing::Rng rng(71);

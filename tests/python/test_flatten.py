@@ -13,7 +13,7 @@ PATHS = [
     "M50 50 A 40 20 30 1 1 120 90 Z M0 0 L 10 0 L 10 10",
     "M0 0 C 100 0 0 100 100 100 S 0 200 0 100 z",
 ]
-METHODS = ["guided", "adaptive", "uniform", "halving"]
+METHODS = ["integral", "guided", "adaptive", "uniform", "halving"]
 
 
 @pytest.mark.parametrize("method", METHODS)

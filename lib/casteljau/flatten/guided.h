@@ -59,6 +59,7 @@
 #pragma once
 
 #include "casteljau/flatten/flatness.h"
+#include "casteljau/flatten/power_eval.h"
 #include "casteljau/flatten/vertex.h"
 
 #include <algorithm>
@@ -153,19 +154,15 @@ template <int N>
 class HermitePieces {
   public:
     /// The pieces of c, starting at t = 0.
-    explicit HermitePieces(const Bez<N>& c) noexcept : power_(c.power()), end_(c.end()) {
-        for (int j = 0; j < N; ++j) dpower_[j] = power_.c[j] * double(j + 1);
-        prev_ = {c.start(), power_.c[0]};
-        end_deriv_ = (c.p[N] - c.p[N - 1]) * double(N);
-    }
+    explicit HermitePieces(const Bez<N>& c) noexcept : eval_(c), prev_(eval_.start()) {}
     /// Moves to t1 without a test; returns the point there. Only the `last`
     /// piece of a cut known flat needs the derivative (for the probe after it).
     Point advance(double t1, bool last) noexcept {
         if (last) {
-            eval(t1);
+            next_ = eval_.at(t1);
             return accept();
         }
-        return prev_.p = t1 == 1.0 ? end_ : point_at(t1);
+        return prev_.p = t1 == 1.0 ? eval_.end() : eval_.point(t1);
     }
     /// Whether each of the equal pieces of length h that cut [t0, t1] passes
     /// the parametric test.
@@ -177,16 +174,17 @@ class HermitePieces {
         if constexpr (N == 1) {
             return true;
         } else {
+            const PowerCurve<N>& power = eval_.power();
             const double h4 = h * h * h * h;
-            if constexpr (N == 2) return h4 * power_.c[1].length_sq() * 0.25 <= scaled_tol;
-            const Vec2 a = power_.c[1] * (1.0 / 3) + power_.c[2] * (t0 + h * (1.0 / 3));
-            const Vec2 b = power_.c[1] * (1.0 / 3) + power_.c[2] * (t1 - h * (1.0 / 3));
+            if constexpr (N == 2) return h4 * power.c[1].length_sq() * 0.25 <= scaled_tol;
+            const Vec2 a = power.c[1] * (1.0 / 3) + power.c[2] * (t0 + h * (1.0 / 3));
+            const Vec2 b = power.c[1] * (1.0 / 3) + power.c[2] * (t1 - h * (1.0 / 3));
             return h4 * std::max(a.length_sq(), b.length_sq()) <= scaled_tol;
         }
     }
     /// The excess (guided_excess) of the piece [t0, t1].
     GuidedExcess probe(double t0, double t1, double scaled_tol) noexcept {
-        eval(t1);
+        next_ = eval_.at(t1);
         if constexpr (N == 1) {
             return {0};
         } else {
@@ -206,39 +204,8 @@ class HermitePieces {
     }
 
   private:
-    // B and B' by Horner's rule in the power basis, x and y side by side in
-    // one SSE2 register (GCC's and Clang's vector extension): the flattener
-    // spends most of its instructions here, and the plain Vec2 code compiled
-    // to scalar operations, one per coordinate. The operations and their
-    // order are those of PowerCurve::eval (horner_eval), so the same bits:
-    // 0.92x the instructions on the bench/flatten corpus (callgrind).
-    typedef double Pair __attribute__((vector_size(16)));
-    static Pair pair(Vec2 a) noexcept { return Pair{a.x, a.y}; }
-    Point point_at(double t) const noexcept {
-        const Pair tt = {t, t};
-        Pair a = {0, 0};
-        for (int j = N; j > 0; --j) a = (a + pair(power_.c[std::size_t(j - 1)])) * tt;
-        return power_.c0 + Vec2{a[0], a[1]};
-    }
-    void eval(double t1) noexcept {
-        if (t1 == 1.0) {
-            next_ = {end_, end_deriv_};
-        } else {
-            const Pair tt = {t1, t1};
-            Pair d = pair(dpower_[N - 1]);
-            for (int j = N - 2; j >= 0; --j) d = d * tt + pair(dpower_[std::size_t(j)]);
-            next_ = {point_at(t1), Vec2{d[0], d[1]}};
-        }
-    }
-    struct End {
-        Point p; ///< B(t)
-        Vec2 d;  ///< B'(t)
-    };
-    PowerCurve<N> power_;
-    std::array<Vec2, N> dpower_; ///< B' in the power basis
-    Point end_;                  ///< exact at t = 1, not the power basis's sum
-    Vec2 end_deriv_;
-    End prev_, next_;
+    PowerEval<N> eval_; // B and B' in SSE2 pairs (power_eval.h)
+    typename PowerEval<N>::Sample prev_, next_;
 };
 
 /// Pieces of any other curve (Bezier, HConic, RationalBezier) by parameter,

@@ -1,0 +1,107 @@
+#include "casteljau/flatten/density.h"
+
+#include <cfloat>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
+namespace casteljau {
+
+namespace {
+
+// Two samples at a time, x and y of B' in one SSE2 register each (GCC's and
+// Clang's vector extension): the sampling is a division, two square roots
+// and another division a sample, which the packed forms halve.
+typedef double Pair __attribute__((vector_size(16)));
+typedef long long Mask __attribute__((vector_size(16)));
+
+Pair sqrt_pair(Pair x) noexcept {
+#if defined(__SSE2__)
+    return Pair(_mm_sqrt_pd(__m128d(x)));
+#else
+    return Pair{std::sqrt(x[0]), std::sqrt(x[1])};
+#endif
+}
+
+} // namespace
+
+int CubicDensity::sample(const PowerCurve<3>& pc, double tol, Samples& w, Samples& dw,
+                         Samples& inv_w, Samples& speed_sq) noexcept {
+    // B' = d0 + d1 t + d2 t^2, B'' = d1 + 2 d2 t, B''' = 2 d2.
+    const Vec2 d0 = pc.c[0], d1 = pc.c[1] * 2.0, d2 = pc.c[2] * 3.0, f = d2 * 2.0;
+    const double k = 1 / std::sqrt(8 * tol);
+    const Pair zero = {0, 0}, one = {1, 1};
+    int slowest = 0;
+    double least = DBL_MAX;
+    for (std::size_t i = 0; i <= kDensityPanels; i += 2) {
+        const Pair t = {double(i) * kH, double(i + 1) * kH}; // the second past 1 at the end
+        const Pair dx = d0.x + (d1.x + d2.x * t) * t, dy = d0.y + (d1.y + d2.y * t) * t;
+        const Pair ex = d1.x + (2 * d2.x) * t, ey = d1.y + (2 * d2.y) * t;
+        const Pair q = dx * ey - dy * ex, p = dx * dx + dy * dy;
+        // Where q p = 0 the curve is straight, or has a cusp: w = 0 there
+        // (integral.h finds cusps), and 1 / w a finite stand-in for infinity
+        // (times a panel's mass: 0 for none, else past the cap of 3).
+        const Mask live = (q != zero) & (p != zero);
+        // One division for w, w' and 1 / w: w^4 = q^2 / p / (64 tol^2) =
+        // q^3 A k^4 and w'/w = q' / (2q) - (B' . B'') / (2p) = (q' p - q B' . B'') A / 2,
+        // with A = 1 / (q p) and q' = B' x B'''.
+        const Pair A = one / (live ? q * p : one);
+        const Pair root = sqrt_pair(sqrt_pair(live ? q * q * q * A : zero)) * k;
+        const Pair slope = root * ((dx * f.y - dy * f.x) * p - q * (dx * ex + dy * ey)) * (0.5 * A);
+        const Pair inverse = live ? one / (live ? root : one) : Pair{DBL_MAX, DBL_MAX};
+        for (std::size_t j = 0; j < 2 && i + j <= kDensityPanels; ++j) {
+            w[i + j] = root[j];
+            dw[i + j] = live[j] ? slope[j] : 0;
+            inv_w[i + j] = inverse[j];
+            speed_sq[i + j] = p[j];
+            if (p[j] < least) least = p[j], slowest = int(i + j);
+        }
+    }
+    return slowest;
+}
+
+void CubicDensity::find_corner(const PowerCurve<3>& pc, double tol, int slowest,
+                               const Samples& speed_sq) noexcept {
+    const Vec2 d0 = pc.c[0], d1 = pc.c[1] * 2.0, d2 = pc.c[2] * 3.0, f = d2 * 2.0;
+    const auto deriv = [&](double t) { return d0 + (d1 + d2 * t) * t; };
+    const auto deriv2 = [&](double t) { return d1 + d2 * (2 * t); };
+    const double r = kCornerRadius * tol;
+    // A corner has |B'|^2 <= r |B''| at its minimum (below: |B' x B''| <= |B'| |B''|).
+    // Most curves' speed stays far above that: the parabola through the three
+    // samples around the slowest estimates the minimum, and a search starts
+    // only when the estimate is within 16 times of it (a miss costs the
+    // flattener corrections, never a wrong chord).
+    const std::size_t k = std::size_t(std::clamp(slowest, 1, kDensityPanels - 1));
+    const double a = speed_sq[k - 1], b = speed_sq[k], c = speed_sq[k + 1];
+    const double curv = a - 2 * b + c; // twice the parabola's t^2 coefficient, in samples
+    const double least = curv > 0 ? b - (c - a) * (c - a) / (8 * curv) : std::min({a, b, c});
+    const double bend = std::max(deriv2(double(k - 1) * kH).length_sq(),
+                                 deriv2(double(k + 1) * kH).length_sq()); // |B''|^2 at most
+    if (least > 0 && least * least > 256 * r * r * bend) return;
+    // |B'|^2 has a minimum inside the samples around the slowest one when
+    // g = B' . B'' (half its derivative) changes sign from - to + there.
+    double lo = double(std::max(slowest - 1, 0)) * kH;
+    double hi = double(std::min(slowest + 1, kDensityPanels)) * kH;
+    if (!(deriv(lo).dot(deriv2(lo)) < 0 && deriv(hi).dot(deriv2(hi)) > 0)) return;
+    // Newton's method on g, kept inside the bracket (bisection when it leaves):
+    // g' = |B''|^2 + B' . B''' > 0 near a minimum, so it converges in a few
+    // steps; the corner need not be exact, only where the curve turns.
+    double t = 0.5 * (lo + hi);
+    for (int step = 0; step < 40; ++step) {
+        const Vec2 d = deriv(t), e = deriv2(t);
+        const double g = d.dot(e), slope = e.length_sq() + d.dot(f);
+        (g < 0 ? lo : hi) = t;
+        double next = slope > 0 ? t - g / slope : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        const bool close = std::fabs(next - t) <= 1e-15;
+        t = next;
+        if (close) break;
+    }
+    // The radius of curvature |B'|^3 / |B' x B''| below kCornerRadius tol, as
+    // squares; an exact cusp (B' = 0) is a corner.
+    const Vec2 d = deriv(t);
+    const double p = d.length_sq(), q = d.cross(deriv2(t));
+    if (t > 0 && t < 1 && p * p * p <= r * r * q * q) corner_ = t;
+}
+
+} // namespace casteljau
