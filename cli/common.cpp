@@ -21,9 +21,9 @@ void add_flatten_options(CLI::App* cmd, FlattenOptions& o) {
                                                        {"uniform", FlattenMethod::Uniform},
                                                        {"halving", FlattenMethod::Halving}};
     cmd->add_option("--flatten", o.method,
-                    "integral (default: near the fewest segments, every chord checked), guided "
-                    "(fastest, about 1.3x the segments), adaptive (greedy), uniform, or halving "
-                    "(textbook midpoint subdivision)")
+                    "guided (default: fastest, about 1.3x the fewest segments), integral (near "
+                    "the fewest segments, every chord checked), adaptive (greedy), uniform, or "
+                    "halving (textbook midpoint subdivision)")
         ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
     cmd->add_option(
            "--segments", o.segments,

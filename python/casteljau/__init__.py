@@ -82,7 +82,7 @@ def _source(source):
 
 def render_svg(source, *, width=None, height=None, scale=None, background=None,
                tolerance=0.25, threads=0, pixels="u8", strict=False, canvas="auto",
-               method="integral", segments=None, antialias=True, gradient_interpolation="srgb"):
+               method="guided", segments=None, antialias=True, gradient_interpolation="srgb"):
     """Renders an SVG document to a NumPy array of straight RGBA pixels.
 
     source: a path (str or os.PathLike), SVG text (a str whose first non-blank
@@ -108,8 +108,8 @@ def render_svg(source, *, width=None, height=None, scale=None, background=None,
       canvas: the canvas drawn on, as the CLI's --pixels: "auto" (the default:
         "u8" for u8 arrays, as the CLI's PNG, "float" for float32 ones),
         "float" (exact) or "u8" (8 bits a channel, as Cairo and Skia draw).
-      method, segments: the flattening method ("integral", the default,
-        "guided", "adaptive", "uniform", "halving") and, for "uniform",
+      method, segments: the flattening method ("guided", the default,
+        "integral", "adaptive", "uniform", "halving") and, for "uniform",
         segments per curve.
       antialias: exact-area coverage (True) or pixel centres (False).
       gradient_interpolation: "srgb" (SVG 1.1) or "linear" (linear light).
@@ -132,7 +132,7 @@ def render_svg(source, *, width=None, height=None, scale=None, background=None,
 
 def render_file(source_path, output_path, *, width=None, height=None, scale=None,
                 background=None, tolerance=0.25, threads=1, pixels="auto", strict=False,
-                method="integral", segments=None, antialias=True, gradient_interpolation="srgb"):
+                method="guided", segments=None, antialias=True, gradient_interpolation="srgb"):
     """Renders an SVG file to an image file, as ``casteljau render IN -o OUT``.
 
     The format follows output_path's extension (png, tif, exr, jpg), and the

@@ -5,7 +5,7 @@ Usage::
     python3 -m casteljau.batch IN_DIR_OR_LIST OUT_DIR [--workers N] [--threads-per-worker T]
         [--scheduler ADDRESS] [--resume] [--log FILE.jsonl] [--group-bytes B] [--group-files N]
         [--width W | --height H | --scale S] [--tolerance PX]
-        [--flatten integral|guided|adaptive|uniform|halving] [--segments N] [--antialias on|off]
+        [--flatten guided|integral|adaptive|uniform|halving] [--segments N] [--antialias on|off]
         [--gradient-interpolation srgb|linear] [--background COLOR] [--pixels auto|float|u8]
         [--strict] [--format png|tif|exr|jpg] [--render-threads N]
 
@@ -246,8 +246,8 @@ def build_parser():
                       help="scale factor from the document size")
     r.add_argument("--tolerance", type=_ranged(float, 1e-4, 1), default=0.25, metavar="PX",
                    help="flatness bound in device pixels, in [1e-4, 1] (default 0.25)")
-    r.add_argument("--flatten", choices=("integral", "guided", "adaptive", "uniform", "halving"),
-                   help="flattening method (default integral)")
+    r.add_argument("--flatten", choices=("guided", "integral", "adaptive", "uniform", "halving"),
+                   help="flattening method (default guided)")
     r.add_argument("--segments", type=_ranged(int, 1, 1048576), metavar="N",
                    help="uniform only: segments per curve")
     r.add_argument("--antialias", choices=("on", "off"), help="on (default) or off")

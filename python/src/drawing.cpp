@@ -215,7 +215,7 @@ methods are safe to call from several threads.)doc")
                 return canvas;
             },
             "canvas"_a = py::none(), py::kw_only(), "background"_a = py::none(),
-            "tolerance"_a = 0.25, "method"_a = "integral", "segments"_a = py::none(),
+            "tolerance"_a = 0.25, "method"_a = "guided", "segments"_a = py::none(),
             "antialias"_a = true, "threads"_a = 1,
             "Renders every shape onto `canvas` (a Canvas or Canvas8 of the drawing's size; "
             "None: a new Canvas) over `background`; returns the canvas. The GIL is released.")
@@ -235,7 +235,7 @@ methods are safe to call from several threads.)doc")
                 return canvas;
             },
             "canvas"_a, "dirty"_a, py::kw_only(), "background"_a = py::none(), "tolerance"_a = 0.25,
-            "method"_a = "integral", "segments"_a = py::none(), "antialias"_a = true,
+            "method"_a = "guided", "segments"_a = py::none(), "antialias"_a = true,
             "Re-renders only the rectangle `dirty` (x0, y0, x1, y1; clipped to the canvas) of "
             "a canvas rendered before, with the same options: the result equals a full render.")
         .def(

@@ -87,13 +87,13 @@ py::tuple flatten(py::handle path_or_d, double tolerance, const std::string& met
 } // namespace
 
 void bind_flatten(py::module_& m) {
-    m.def("flatten", &flatten, "path_or_d"_a, "tolerance"_a = 0.25, "method"_a = "integral",
+    m.def("flatten", &flatten, "path_or_d"_a, "tolerance"_a = 0.25, "method"_a = "guided",
           "segments"_a = py::none(), py::kw_only(), "transform"_a = py::none(),
           R"doc(
 Flattens a Path, or a string of SVG path data, into polylines within
 `tolerance` device pixels (in [1e-4, 1]) of the curves.
 
-method: 'integral' (default, near the fewest segments), 'guided' (fastest),
+method: 'guided' (default, fastest), 'integral' (near the fewest segments),
 'adaptive' (greedy), 'uniform' (`segments` per curve, or without it the fewest
 Wang's bound allows) or 'halving' (textbook midpoint subdivision). `transform` maps the path to
 device space first (default: path units are pixels).

@@ -202,14 +202,14 @@ void bind_render(py::module_& m) {
     m.def("_render_svg", &render_svg, "path"_a, "text"_a, "name"_a, py::kw_only(),
           "width"_a = py::none(), "height"_a = py::none(), "scale"_a = py::none(),
           "background"_a = py::none(), "tolerance"_a = 0.25, "threads"_a = 0, "pixels"_a = "u8",
-          "canvas"_a = "auto", "strict"_a = false, "method"_a = "integral",
+          "canvas"_a = "auto", "strict"_a = false, "method"_a = "guided",
           "segments"_a = py::none(), "antialias"_a = true, "gradient_interpolation"_a = "srgb",
           "Renders an SVG file (path) or text (with `name` for messages); returns (array, "
           "warnings). See casteljau.render_svg.");
     m.def("_render_file", &render_file, "input"_a, "output"_a, py::kw_only(),
           "width"_a = py::none(), "height"_a = py::none(), "scale"_a = py::none(),
           "background"_a = py::none(), "tolerance"_a = 0.25, "threads"_a = 1, "pixels"_a = "auto",
-          "strict"_a = false, "method"_a = "integral", "segments"_a = py::none(),
+          "strict"_a = false, "method"_a = "guided", "segments"_a = py::none(),
           "antialias"_a = true, "gradient_interpolation"_a = "srgb",
           "Renders an SVG file to an image file; returns the stats. See casteljau.render_file.");
 }
