@@ -93,11 +93,11 @@ OutputSize size_of(const Scene& scene, const Request& r, const std::string& name
     return size;
 }
 
-// The canvas of the CLI's render_one: reset to the output size, then the
-// band renderer (which clears it to the background) with the same view.
+// The canvas of the CLI's render_file: sized to the output (not cleared: the
+// band renderer clears it to the background), then the same view.
 template <class Target>
 void draw(const Scene& scene, const OutputSize& size, const Request& r, Target& canvas) {
-    canvas.reset(size.width, size.height);
+    canvas.resize(size.width, size.height);
     BandRenderer renderer;
     renderer.render(scene, Affine::scale(size.scale), canvas, r.options, r.background, r.threads);
 }
@@ -202,8 +202,8 @@ void bind_render(py::module_& m) {
     m.def("_render_svg", &render_svg, "path"_a, "text"_a, "name"_a, py::kw_only(),
           "width"_a = py::none(), "height"_a = py::none(), "scale"_a = py::none(),
           "background"_a = py::none(), "tolerance"_a = 0.25, "threads"_a = 0, "pixels"_a = "u8",
-          "canvas"_a = "auto", "strict"_a = false, "method"_a = "guided",
-          "segments"_a = py::none(), "antialias"_a = true, "gradient_interpolation"_a = "srgb",
+          "canvas"_a = "auto", "strict"_a = false, "method"_a = "guided", "segments"_a = py::none(),
+          "antialias"_a = true, "gradient_interpolation"_a = "srgb",
           "Renders an SVG file (path) or text (with `name` for messages); returns (array, "
           "warnings). See casteljau.render_svg.");
     m.def("_render_file", &render_file, "input"_a, "output"_a, py::kw_only(),

@@ -95,7 +95,7 @@ struct IntegralParams {
 /// The integral flattener of a Bez<N> as a range of FlatVertex (see
 /// flatten_integral for the sink form).
 template <int N>
-class IntegralFlattener : public FlatVertexRange<IntegralFlattener<N>> {
+class IntegralFlattener : public FlatVertexLoop<IntegralFlattener<N>> {
   public:
     /// The flattener constants.
     using P = IntegralParams;
@@ -110,25 +110,8 @@ class IntegralFlattener : public FlatVertexRange<IntegralFlattener<N>> {
         plan(0);
     }
 
-    /// Writes the next vertex; false once the end point has been emitted.
-    bool next(FlatVertex& out) noexcept {
-        return run([&](const FlatVertex& v) {
-            out = v;
-            return false;
-        });
-    }
-
-    /// The sink form: sink(v) for every remaining vertex, by the same loop as
-    /// next(), run to the end in one call so that its state stays in registers.
-    template <class Sink>
-    void drain(Sink& sink) noexcept {
-        run([&](const FlatVertex& v) {
-            sink(v);
-            return true;
-        });
-    }
-
   private:
+    friend FlatVertexLoop<IntegralFlattener<N>>;
     /// The loop: emit(v) for each vertex while it returns true; returns
     /// whether it stopped at a vertex (false: none was left).
     template <class Emit>
