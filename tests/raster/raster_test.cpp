@@ -63,10 +63,10 @@ TEST(CoverageRow, DepositsSumToTheSignedHeight) {
         const float ya = float(rng.uniform(0, 0.5)), yb = float(rng.uniform(0.5, 1));
         row.add_segment(xa, ya, xb, yb, -1.0f);
         float s = 0;
-        for (int k = 0; k < 42; ++k) s += row.data()[k];
+        for (int k = 0; k < 43; ++k) s += row.data()[k];
         EXPECT_NEAR(s, -(yb - ya), 1e-5f) << i;
         EXPECT_GE(row.begin(), int(std::min(xa, xb)));
-        EXPECT_LE(row.end(), 42);
+        EXPECT_LE(row.end(), 43);
     }
 }
 
@@ -124,7 +124,7 @@ TEST(Sweep, WideInsidesLeaveAsOneSolidSpan) {
     float total = 0;
     for (float v : sink.values) total += v;
     EXPECT_NEAR(total, 200.25f - 3.5f + 6.0f, 1e-4f);
-    for (int i = 0; i < 302; ++i) EXPECT_EQ(row.data()[i], 0.0f) << "row left dirty at " << i;
+    for (int i = 0; i < 303; ++i) EXPECT_EQ(row.data()[i], 0.0f) << "row left dirty at " << i;
 }
 
 // Fast against reference: whether the touched columns are few (summed in
@@ -154,7 +154,7 @@ TEST(Sweep, SpansCarryTheRunningSumsExactly) {
             row.add_segment(xa, 0, xb, 1, 1.0f); // down, then back up elsewhere: closed
             row.add_segment(x0 + float(rng.uniform(0, spread)), 0, xa, 1, -1.0f);
         }
-        std::vector<float> deposits(row.data(), row.data() + 202);
+        std::vector<float> deposits(row.data(), row.data() + 203);
         const int touched_end = row.end(); // past it, the winding is rounded (sweep.cpp)
         Record sink;
         std::vector<float> scratch;
@@ -166,7 +166,7 @@ TEST(Sweep, SpansCarryTheRunningSumsExactly) {
             EXPECT_EQ(sink.cov[std::size_t(x)], want < 1e-6f ? 0.0f : want)
                 << "case " << i << " spread " << spread << " pixel " << x;
         }
-        for (int x = 0; x < 202; ++x) EXPECT_EQ(row.data()[x], 0.0f) << "row left dirty at " << x;
+        for (int x = 0; x < 203; ++x) EXPECT_EQ(row.data()[x], 0.0f) << "row left dirty at " << x;
     }
 }
 
