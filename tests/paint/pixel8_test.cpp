@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <gtest/gtest.h>
+#include <vector>
 
 namespace casteljau {
 namespace {
@@ -79,6 +80,39 @@ TEST(Pixel8, CoverageZeroKeepsAndOpaqueFullCoverageReplaces) {
         s = premultiply({s.r, s.g, s.b, 1.0f});
         blend_over(d, s, 1.0f);
         ASSERT_EQ(d, quantize(s)) << "trial " << trial;
+    }
+}
+
+// Fast against reference: a run blended four pixels at a time carries the
+// bits of blend_over pixel by pixel, per-pixel and constant coverage alike,
+// whatever the run's length (the four-pixel body and the one-pixel tail),
+// with coverage 0 and 1 and opaque sources among the cases.
+TEST(Pixel8, RunsBlendAsPixelByPixel) {
+    testing::Rng rng(84);
+    for (int trial = 0; trial < 3000; ++trial) {
+        const int n = rng.integer(0, 13);
+        std::vector<Premul8> start(std::size_t(n) + 1);
+        std::vector<float> k(std::size_t(n) + 1);
+        for (int i = 0; i < n; ++i) {
+            start[std::size_t(i)] = quantize(random_premul(rng));
+            const double pick = rng.uniform(0, 1);
+            k[std::size_t(i)] = pick < 0.2 ? 0.0f : pick < 0.5 ? 1.0f : float(rng.uniform(0, 1));
+        }
+        const Premul s = random_premul(rng);
+        std::vector<Premul8> want = start, got = start;
+        for (int i = 0; i < n; ++i) blend_over(want[std::size_t(i)], s, k[std::size_t(i)]);
+        blend_span_over(got.data(), n, s, k.data());
+        for (int i = 0; i < n; ++i)
+            ASSERT_EQ(got[std::size_t(i)], want[std::size_t(i)])
+                << "trial " << trial << " pixel " << i << " of " << n << " k " << k[std::size_t(i)];
+        const float solid = k[0];
+        want = start, got = start;
+        for (int i = 0; i < n; ++i) blend_over(want[std::size_t(i)], s, solid);
+        blend_span_over(got.data(), n, s, solid);
+        for (int i = 0; i < n; ++i)
+            ASSERT_EQ(got[std::size_t(i)], want[std::size_t(i)])
+                << "trial " << trial << " pixel " << i << " of " << n << " solid " << solid;
+        EXPECT_EQ(got[std::size_t(n)], start[std::size_t(n)]) << "wrote past the run";
     }
 }
 
