@@ -9,7 +9,7 @@
 //   Msegments_per_s     emitted segments per second
 //   max_error_px        the measured maximum error (error.h), taken once
 //   vs_optimal          segments / the optimal count (integral of sqrt(k / 8 tol) ds)
-// Methods: integral (the default: evenly spaced in the integral of the
+// Methods: integral (evenly spaced in the integral of the
 // segment density, every chord checked, integral.h), adaptive (adaptive.h),
 // halving (textbook, halving.h), guided (cut into the predicted number of
 // pieces, guided.h), uniform_best (per curve the smallest N whose measured

@@ -6,6 +6,7 @@
 #include "casteljau/flatten/flatten.h"
 #include "corpus.h"
 
+#include <cmath>
 #include <gtest/gtest.h>
 #include <numbers>
 
@@ -112,6 +113,37 @@ TEST(Integral, ExactCuspGetsAVertex) {
         for (const FlatVertex& x : v) found = found || std::fabs(x.t - 0.5) < 1e-12;
         EXPECT_TRUE(found) << "tol " << tol;
     }
+}
+
+TEST(Integral, CornerSearchFindsNearCuspsAndNothingElse) {
+    // The speed minimum by brute force (a fine grid) against the corner search
+    // (density.h), a screen and then Newton's method from the sampled speeds:
+    // a near cusp or a tight loop with a radius of curvature below half of
+    // kCornerRadius tol must get its corner at the minimum, and no curve whose
+    // radius is above twice that may get one.
+    int found = 0;
+    for (double tol : {0.1, 0.25, 1.0}) {
+        for (const auto& [kind, c] : testing::cubic_corpus(11, 40)) {
+            double least = 1e300, at = 0;
+            for (int i = 1; i < 20000; ++i) {
+                const double t = i / 20000.0, p = c.deriv(t).length_sq();
+                if (p < least) least = p, at = t;
+            }
+            const Vec2 d = c.deriv(at);
+            const double radius = std::pow(d.length_sq(), 1.5) / std::fabs(d.cross(c.deriv2(at)));
+            const double corner = CubicDensity(c.power(), tol).corner();
+            found += corner < 1;
+            const std::string what = kind + " tol " + std::to_string(tol) + " radius " +
+                                     std::to_string(radius) + " minimum at " + std::to_string(at);
+            if (radius > 2 * kCornerRadius * tol) {
+                EXPECT_EQ(corner, 1.0) << what;
+            }
+            if (radius < 0.5 * kCornerRadius * tol && (kind == "near_cusp" || kind == "loop")) {
+                EXPECT_NEAR(corner, at, 1e-4) << what;
+            }
+        }
+    }
+    EXPECT_GT(found, 100); // the corpus's near cusps at every tolerance
 }
 
 TEST(Integral, RangeFormEqualsSinkForm) {

@@ -1,12 +1,14 @@
-// The integral flattener, the default: Levien's method ("Flattening quadratic
-// Beziers", 2019) made exact. The count of chords is the integral of the
-// segment density (density.h), about the optimal count, and the vertices are
-// spaced evenly in that integral, so that every chord deviates by about the
-// same amount; then every chord is checked against the curve, and the few the
+// The integral flattener (selected by FlattenOptions or `--flatten integral`;
+// guided.h is the default): Levien's method ("Flattening quadratic Beziers",
+// 2019) made exact. The count of chords is the integral of the segment
+// density (density.h), about the optimal count, and the vertices are spaced
+// evenly in that integral, so that every chord deviates by about the same
+// amount; then every chord is checked against the curve, and the few the
 // density misplaces are corrected. Measured on the bench/flatten corpus
-// (bench/README.md): 1.045x the optimal count at 0.25 px and 1.029x at 0.1 px,
-// fewer segments than the greedy adaptive.h at about 2.5x its speed, and
-// 0.8x guided.h's segments at about 0.4x its speed per segment.
+// (bench/README.md, 2026-11-24): 1.045x the optimal count at 0.25 px and
+// 1.029x at 0.1 px at 22-24 M segments/s, fewer segments than the greedy
+// adaptive.h at about 2.5x its speed, and 0.8x guided.h's segments at about
+// 0.4x its speed per segment (48-57 M segments/s in the same runs).
 //
 // The plan. With I = integral_0^1 w (a chord over which w integrates to d
 // deviates by about tol d^2), the curve gets n = ceil(I) chords, the j-th
