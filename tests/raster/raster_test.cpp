@@ -127,6 +127,28 @@ TEST(Sweep, WideInsidesLeaveAsOneSolidSpan) {
     for (int i = 0; i < 303; ++i) EXPECT_EQ(row.data()[i], 0.0f) << "row left dirty at " << i;
 }
 
+// Regression (the full-canvas rectangle): edges on column borders deposit an
+// exact 0 in the column after them, which must not cut the row's inside
+// into a one-pixel span and a solid one (the span wrote its row, the solid
+// store wrote it again).
+TEST(Sweep, PixelAlignedRowsLeaveAsOneSolidSpan) {
+    struct Record final : SpanSink {
+        std::vector<Span> spans;
+        void span(const Span& s) override { spans.push_back(s); }
+    } sink;
+    CoverageRow row;
+    row.reset(100);
+    row.add_segment(0.0f, 0, 0.0f, 1, -1.0f);
+    row.add_segment(100.0f, 0, 100.0f, 1, 1.0f);
+    std::vector<float> scratch;
+    sweep_row(row, 3, 0, FillRule::NonZero, scratch, sink);
+    ASSERT_EQ(sink.spans.size(), 1u);
+    EXPECT_EQ(sink.spans[0].x, 0);
+    EXPECT_EQ(sink.spans[0].len, 100);
+    EXPECT_EQ(sink.spans[0].coverage, nullptr);
+    EXPECT_EQ(sink.spans[0].solid, 1.0f);
+}
+
 // Fast against reference: whether the touched columns are few (summed in
 // one pass) or spread (visited by their marks), every pixel carries the
 // plain running sum of the row's deposits under the fill rule, bit for bit,
