@@ -86,17 +86,20 @@ TEST(Sweep, FillRules) {
     EXPECT_FLOAT_EQ(apply_fill_rule(3.0f, FillRule::EvenOdd), 1.0f);
 }
 
+// The spans of a swept row, and the coverage of their pixels in order.
+struct RecordedRow final : SpanSink {
+    std::vector<Span> spans;
+    std::vector<float> values;
+    void span(const Span& s) override {
+        spans.push_back(s);
+        for (int i = 0; i < s.len; ++i) values.push_back(s.at(i));
+    }
+};
+
 // The inside of a wide shape reaches the compositor as one solid span; the
 // partly covered ends as per-pixel spans; no span is empty or overlaps.
 TEST(Sweep, WideInsidesLeaveAsOneSolidSpan) {
-    struct Record final : SpanSink {
-        std::vector<Span> spans;
-        std::vector<float> values; // coverage of every pixel, in order
-        void span(const Span& s) override {
-            spans.push_back(s);
-            for (int i = 0; i < s.len; ++i) values.push_back(s.at(i));
-        }
-    } sink;
+    RecordedRow sink;
     CoverageRow row;
     row.reset(300);
     // A band from x = 3.5 to 200.25 over the whole row height, and a thin
@@ -132,10 +135,7 @@ TEST(Sweep, WideInsidesLeaveAsOneSolidSpan) {
 // into a one-pixel span and a solid one (the span wrote its row, the solid
 // store wrote it again).
 TEST(Sweep, PixelAlignedRowsLeaveAsOneSolidSpan) {
-    struct Record final : SpanSink {
-        std::vector<Span> spans;
-        void span(const Span& s) override { spans.push_back(s); }
-    } sink;
+    RecordedRow sink;
     CoverageRow row;
     row.reset(100);
     row.add_segment(0.0f, 0, 0.0f, 1, -1.0f);
