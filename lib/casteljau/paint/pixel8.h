@@ -101,19 +101,23 @@ __m128i blend_lane(__m128 src, __m128 k255, __m128 inv, __m128i lanes) {
 #endif
 
 namespace detail {
-// Coverage per pixel, or one for the whole run: what blend_run reads, one
-// pixel or four at a time.
+/// Coverage per pixel, as blend_run reads it: one pixel or four at a time.
 struct PerPixel {
-    const float* k;
+    const float* k; ///< the run's coverage values
+    /// Pixel i's coverage.
     float at(int i) const { return k[i]; }
 #if defined(__SSE2__)
+    /// Pixels i to i + 3's coverage.
     __m128 four(int i) const { return _mm_loadu_ps(k + i); }
 #endif
 };
+/// One coverage for the whole run, as blend_run reads it.
 struct Constant {
-    float k;
+    float k; ///< every pixel's coverage
+    /// Pixel i's coverage.
     float at(int) const { return k; }
 #if defined(__SSE2__)
+    /// Pixels i to i + 3's coverage.
     __m128 four(int) const { return _mm_set1_ps(k); }
 #endif
 };

@@ -56,7 +56,8 @@ void Rasterizer::fill(const EdgeList& edges, FillRule rule, bool antialias, Span
     const std::vector<Edge>& list = edges.edges();
     if (list.empty() || width_ <= 0) return;
     sort_edges(list, edges.row_begin());
-    if (antialias && row_.width() != width_) row_.reset(width_);
+    if (antialias && rows_[0].width() != width_)
+        for (CoverageRow& row : rows_) row.reset(width_);
     active_.clear();
     std::size_t next = 0;
     int y = std::max(edges.row_begin(), int(sorted_[0].y0));
@@ -65,30 +66,42 @@ void Rasterizer::fill(const EdgeList& edges, FillRule rule, bool antialias, Span
             y = std::max(y, int(sorted_[next].y0));
             if (y >= row_end) break;
         }
-        const float bottom = float(y + 1);
+        const int strip_end = std::min(row_end, y + kStripRows);
+        const float bottom = float(strip_end);
         while (next < sorted_.size() && sorted_[next].y0 < bottom)
             active_.push_back(sorted_[next++]);
-        if (antialias)
-            row_antialiased(y, rule, sink);
-        else
-            row_aliased(y, rule, sink);
-        // Retire edges that end in this row.
+        if (antialias) {
+            strip_antialiased(y, strip_end);
+            for (int r = y; r < strip_end; ++r)
+                sweep_row(rows_[std::size_t(r - y)], r, x0_, rule, coverage_, sink);
+        } else {
+            for (int r = y; r < strip_end; ++r) row_aliased(r, rule, sink);
+        }
+        // Retire edges that end in this strip.
         std::erase_if(active_, [bottom](const Active& a) { return a.y1 <= bottom; });
-        ++y;
+        y = strip_end;
     }
 }
 
-void Rasterizer::row_antialiased(int y, FillRule rule, SpanSink& sink) {
-    const float top = float(y), bottom = float(y + 1);
+// Each active edge deposits its part of every row of the strip in turn: the
+// edge's fields stay in registers and its rows' branches follow its slope,
+// where a pass over the active list per row reloaded every edge per row and
+// mispredicted between edges of different slopes. Each row still receives
+// the edges' deposits in the active list's order, with the arithmetic of a
+// row at a time, so its sums are the same bit for bit.
+void Rasterizer::strip_antialiased(int y0, int y1) {
+    const float w = float(width_);
     for (const Active& a : active_) {
-        const float ya = std::max(a.y0, top), yb = std::min(a.y1, bottom);
-        if (!(ya < yb)) continue;
-        const float xa = a.x0 + (ya - a.y0) * a.dxdy, xb = a.x0 + (yb - a.y0) * a.dxdy;
-        const float w = float(width_);
-        row_.add_segment(std::clamp(xa, 0.0f, w), ya - top, std::clamp(xb, 0.0f, w), yb - top,
-                         a.dir);
+        const int first = std::max(y0, int(a.y0)), last = std::min(y1, int(std::ceil(a.y1)));
+        for (int y = first; y < last; ++y) {
+            const float top = float(y), bottom = float(y + 1);
+            const float ya = std::max(a.y0, top), yb = std::min(a.y1, bottom);
+            if (!(ya < yb)) continue;
+            const float xa = a.x0 + (ya - a.y0) * a.dxdy, xb = a.x0 + (yb - a.y0) * a.dxdy;
+            rows_[std::size_t(y - y0)].add_segment(std::clamp(xa, 0.0f, w), ya - top,
+                                                   std::clamp(xb, 0.0f, w), yb - top, a.dir);
+        }
     }
-    sweep_row(row_, y, x0_, rule, coverage_, sink);
 }
 
 void Rasterizer::row_aliased(int y, FillRule rule, SpanSink& sink) {

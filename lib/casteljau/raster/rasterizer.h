@@ -1,12 +1,11 @@
 // The scanline driver: edges -> per-row accumulation -> sweep -> spans.
 //
 // Edges are sorted by their first row once (mostly a counting sort); rows
-// are visited top to bottom with an active list of the edges crossing the
-// row, and rows without edges are skipped, so the cost is O(E + R + sum over
-// rows of (active edges + swept columns)), R the rows from the first edge's
-// top to the last's within the band: it grows with the outline and the
-// covered spans, never with the canvas area. All buffers are kept between
-// calls.
+// are visited top to bottom, in strips of kStripRows, with an active list of
+// the edges crossing the strip, and rows without edges are skipped, so the cost is O(E + R + sum
+// over rows of (active edges + swept columns)), R the rows from the first edge's top to the last's
+// within the band: it grows with the outline and the covered spans, never with the canvas area. All
+// buffers are kept between calls.
 //
 // Antialiased mode deposits exact areas (accumulate.h). Aliased mode samples
 // each pixel at its centre: a pixel is inside when the fill rule holds for the
@@ -19,6 +18,7 @@
 #include "casteljau/raster/span.h"
 #include "casteljau/raster/sweep.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -38,7 +38,12 @@ class Rasterizer {
     struct Crossing {
         float x, dir;
     };
-    void row_antialiased(int y, FillRule rule, SpanSink& sink);
+    /// Rows per pass over the active edges (antialiased). Tiger frames
+    /// (cairo_compare_bench, 8-bit): 0.39-0.40x Cairo at 4 rows, 0.37-0.38 at
+    /// 16 and 32, 0.44 at 1 (a pass per row); 16 rows' buffers are 64 KB at
+    /// 1024 px, which the second-level cache holds.
+    static constexpr int kStripRows = 16;
+    void strip_antialiased(int y0, int y1);
     void row_aliased(int y, FillRule rule, SpanSink& sink);
 
     /// Fills sorted_ from the edges, in the order every band agrees on.
@@ -49,7 +54,7 @@ class Rasterizer {
     std::vector<Active> sorted_, active_;
     std::vector<Crossing> crossings_;
     std::vector<float> coverage_;
-    CoverageRow row_;
+    std::array<CoverageRow, kStripRows> rows_; ///< the strip's rows, in order
     int width_ = 0, x0_ = 0;
 };
 
