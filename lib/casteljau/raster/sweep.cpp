@@ -56,7 +56,10 @@ class RowSpans {
         : sink_(sink), cov_(cov), y_(y), x_offset_(x_offset) {}
 
     // Columns [i, j) have coverage c; i is the end of the previous run.
-    void run(int i, int j, float c) {
+    // Inlined by force: with the sweep a template on the fill rule, GCC
+    // left this a call per run (1% of the tiger's samples, and the 2k blobs'
+    // frame 4% slower).
+    [[gnu::always_inline]] void run(int i, int j, float c) {
         if (c < kInvisible) {
             flush();
         } else if (j - i >= kSolidRun) {
