@@ -86,48 +86,65 @@ TEST(Sweep, FillRules) {
     EXPECT_FLOAT_EQ(apply_fill_rule(3.0f, FillRule::EvenOdd), 1.0f);
 }
 
-// The spans of a swept row, and the coverage of their pixels in order.
+// The spans of a swept row, each with a copy of its per-pixel coverage
+// (empty for a solid span): the sweep's buffer is valid only during the
+// call, so a recorded span's `coverage` is only compared with null.
 struct RecordedRow final : SpanSink {
     std::vector<Span> spans;
-    std::vector<float> values;
+    std::vector<std::vector<float>> coverage;
     void span(const Span& s) override {
         spans.push_back(s);
-        for (int i = 0; i < s.len; ++i) values.push_back(s.at(i));
+        coverage.emplace_back(s.coverage ? s.coverage : nullptr,
+                              s.coverage ? s.coverage + s.len : nullptr);
+    }
+    // The coverage of every pixel of every span, summed.
+    float total() const {
+        float t = 0;
+        for (std::size_t k = 0; k < spans.size(); ++k) {
+            if (!spans[k].coverage) t += spans[k].solid * float(spans[k].len);
+            for (float v : coverage[k]) t += v;
+        }
+        return t;
     }
 };
+
+// Sweeps row y of a `width`-pixel row (column i at pixel x_offset + i) holding
+// vertical edges over the row's whole height, given as (x, direction), and
+// checks that the sweep left the row zeroed.
+RecordedRow sweep_vertical_edges(int width, int y, int x_offset,
+                                 std::initializer_list<std::pair<float, float>> edges) {
+    CoverageRow row;
+    row.reset(width);
+    for (const auto& [x, dir] : edges) row.add_segment(x, 0, x, 1, dir);
+    RecordedRow sink;
+    std::vector<float> scratch;
+    sweep_row(row, y, x_offset, FillRule::NonZero, scratch, sink);
+    for (const Span& s : sink.spans) EXPECT_EQ(s.y, y);
+    for (int i = 0; i < width + 3; ++i) EXPECT_EQ(row.data()[i], 0.0f) << "row left dirty at " << i;
+    return sink;
+}
 
 // The inside of a wide shape reaches the compositor as one solid span; the
 // partly covered ends as per-pixel spans; no span is empty or overlaps.
 TEST(Sweep, WideInsidesLeaveAsOneSolidSpan) {
-    RecordedRow sink;
-    CoverageRow row;
-    row.reset(300);
     // A band from x = 3.5 to 200.25 over the whole row height, and a thin
     // sliver from x = 250 to 256 (short: per-pixel).
-    row.add_segment(3.5f, 0, 3.5f, 1, -1.0f);
-    row.add_segment(200.25f, 0, 200.25f, 1, 1.0f);
-    row.add_segment(250.0f, 0, 250.0f, 1, -1.0f);
-    row.add_segment(256.0f, 0, 256.0f, 1, 1.0f);
-    std::vector<float> scratch;
-    sweep_row(row, 7, 10, FillRule::NonZero, scratch, sink);
+    const RecordedRow sink = sweep_vertical_edges(
+        300, 7, 10, {{3.5f, -1.0f}, {200.25f, 1.0f}, {250.0f, -1.0f}, {256.0f, 1.0f}});
     ASSERT_EQ(sink.spans.size(), 4u);
     EXPECT_EQ(sink.spans[0].x, 13);
     EXPECT_EQ(sink.spans[0].len, 1);
-    EXPECT_FLOAT_EQ(sink.spans[0].coverage[0], 0.5f);
+    EXPECT_FLOAT_EQ(sink.coverage[0].at(0), 0.5f);
     EXPECT_EQ(sink.spans[1].coverage, nullptr);
     EXPECT_EQ(sink.spans[1].x, 14);
     EXPECT_EQ(sink.spans[1].len, 196);
     EXPECT_EQ(sink.spans[1].solid, 1.0f);
     EXPECT_EQ(sink.spans[2].x, 210);
-    EXPECT_FLOAT_EQ(sink.spans[2].coverage[0], 0.25f);
+    EXPECT_FLOAT_EQ(sink.coverage[2].at(0), 0.25f);
     EXPECT_EQ(sink.spans[3].x, 260);
     EXPECT_EQ(sink.spans[3].len, 6);
-    EXPECT_NE(sink.spans[3].coverage, nullptr);
-    for (const Span& s : sink.spans) EXPECT_EQ(s.y, 7);
-    float total = 0;
-    for (float v : sink.values) total += v;
-    EXPECT_NEAR(total, 200.25f - 3.5f + 6.0f, 1e-4f);
-    for (int i = 0; i < 303; ++i) EXPECT_EQ(row.data()[i], 0.0f) << "row left dirty at " << i;
+    EXPECT_EQ(sink.coverage[3].size(), 6u);
+    EXPECT_NEAR(sink.total(), 200.25f - 3.5f + 6.0f, 1e-4f);
 }
 
 // Regression (the full-canvas rectangle): edges on column borders deposit an
@@ -135,13 +152,7 @@ TEST(Sweep, WideInsidesLeaveAsOneSolidSpan) {
 // into a one-pixel span and a solid one (the span wrote its row, the solid
 // store wrote it again).
 TEST(Sweep, PixelAlignedRowsLeaveAsOneSolidSpan) {
-    RecordedRow sink;
-    CoverageRow row;
-    row.reset(100);
-    row.add_segment(0.0f, 0, 0.0f, 1, -1.0f);
-    row.add_segment(100.0f, 0, 100.0f, 1, 1.0f);
-    std::vector<float> scratch;
-    sweep_row(row, 3, 0, FillRule::NonZero, scratch, sink);
+    const RecordedRow sink = sweep_vertical_edges(100, 3, 0, {{0.0f, -1.0f}, {100.0f, 1.0f}});
     ASSERT_EQ(sink.spans.size(), 1u);
     EXPECT_EQ(sink.spans[0].x, 0);
     EXPECT_EQ(sink.spans[0].len, 100);

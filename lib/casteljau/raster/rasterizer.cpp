@@ -93,10 +93,11 @@ void Rasterizer::strip_antialiased(int y0, int y1) {
     const float w = float(width_);
     for (const Active& a : active_) {
         const int first = std::max(y0, int(a.y0)), last = std::min(y1, int(std::ceil(a.y1)));
+        // Every row in [floor y0, ceil y1) meets the edge (ya < yb): an active
+        // edge ends below the strip's top (it is retired otherwise).
         for (int y = first; y < last; ++y) {
             const float top = float(y), bottom = float(y + 1);
             const float ya = std::max(a.y0, top), yb = std::min(a.y1, bottom);
-            if (!(ya < yb)) continue;
             const float xa = a.x0 + (ya - a.y0) * a.dxdy, xb = a.x0 + (yb - a.y0) * a.dxdy;
             rows_[std::size_t(y - y0)].add_segment(std::clamp(xa, 0.0f, w), ya - top,
                                                    std::clamp(xb, 0.0f, w), yb - top, a.dir);
