@@ -162,7 +162,7 @@ class HermitePieces {
             next_ = eval_.at(t1);
             return accept();
         }
-        return prev_.p = t1 == 1.0 ? eval_.end() : eval_.point(t1);
+        return prev_.p = eval_.point(t1);
     }
     /// Whether each of the equal pieces of length h that cut [t0, t1] passes
     /// the parametric test.

@@ -62,6 +62,7 @@
 #include "casteljau/flatten/density.h"
 #include "casteljau/flatten/guided.h"
 #include "casteljau/flatten/power_eval.h"
+#include "casteljau/flatten/uniform.h"
 #include "casteljau/flatten/vertex.h"
 
 #include <algorithm>
@@ -71,10 +72,11 @@
 namespace casteljau {
 
 /// Planned chords per curve at most: a hostile curve cannot ask for unbounded
-/// work, and 2^20 matches uniform.h.
-inline constexpr int kIntegralMaxPlan = 1 << 20;
-/// No chord is shorter, but the ones ending at a corner or the end (top of the file).
-inline constexpr double kIntegralMinStep = 1.0 / double(1 << 21);
+/// work; uniform.h's cap.
+inline constexpr int kIntegralMaxPlan = kMaxUniformSegments;
+/// No chord is shorter, but the ones ending at a corner or the end (top of the
+/// file): the guided flattener's shortest tested piece.
+inline constexpr double kIntegralMinStep = 1.0 / double(1 << kGuidedMinLog2);
 
 /// The constants of the check and the correction.
 struct IntegralParams {
@@ -106,7 +108,7 @@ class IntegralFlattener : public FlatVertexLoop<IntegralFlattener<N>> {
     IntegralFlattener(const Bez<N>& c, double tolerance) noexcept
         : eval_(c), density_(eval_.power(), tolerance), prev_(c.start()),
           tol_sq_(tolerance * tolerance) {
-        total_ = end_integral_ = density_.total();
+        end_integral_ = density_.total();
         end_t_ = density_.corner();
         if (end_t_ < 1.0) end_integral_ = density_.integral_at(end_t_);
         plan(0);
@@ -123,14 +125,14 @@ class IntegralFlattener : public FlatVertexLoop<IntegralFlattener<N>> {
             Point p;
             if (below_rounding_) {
                 t1 = std::min(t_ + kIntegralMinStep, end_t_);
-                p = point(t1);
+                p = eval_.point(t1);
             } else {
                 if (next_ == filled_) fill();
                 t1 = ahead_t_[std::size_t(next_)];
                 p = ahead_p_[std::size_t(next_++)];
                 if (!(t1 >= t_ + kIntegralMinStep)) {
                     t1 = std::min(t_ + kIntegralMinStep, end_t_);
-                    p = point(t1);
+                    p = eval_.point(t1);
                 }
                 const ChordBound b = bound(p, t1);
                 if (b.within(tol_sq_) && (left_ == 1 || !b.within(floor_sq_))) {
@@ -161,12 +163,9 @@ class IntegralFlattener : public FlatVertexLoop<IntegralFlattener<N>> {
                     ? end_t_
                     : std::min(density_.t_at(base_ + step_ * double(planned_ + 1 + j)), end_t_);
             ahead_t_[std::size_t(j)] = t;
-            ahead_p_[std::size_t(j)] = point(t);
+            ahead_p_[std::size_t(j)] = eval_.point(t);
         }
     }
-
-    /// The curve's point at t, exact at t = 1.
-    Point point(double t) const noexcept { return t == 1.0 ? eval_.end() : eval_.point(t); }
 
     /// The check (chord_bound.h) of the chord from the last vertex to p at t1.
     ChordBound bound(Point p, double t1) const noexcept {
@@ -203,7 +202,7 @@ class IntegralFlattener : public FlatVertexLoop<IntegralFlattener<N>> {
         }
         end_t_ = 1.0;
         const double from = end_integral_;
-        end_integral_ = total_;
+        end_integral_ = density_.total();
         plan(from);
     }
 
@@ -228,7 +227,7 @@ class IntegralFlattener : public FlatVertexLoop<IntegralFlattener<N>> {
                     below_rounding_ = true;
                     break;
                 }
-                if (best_t > 0 && probe >= P::kMaxProbes) break;
+                if (pass_h > 0 && probe >= P::kMaxProbes) break;
             }
             const double g = std::sqrt(std::sqrt(r));
             double next = 2 * h;
@@ -246,7 +245,7 @@ class IntegralFlattener : public FlatVertexLoop<IntegralFlattener<N>> {
             prev_h = h, prev_g = g;
             t1 = next >= end_t_ - t_ ? end_t_ : t_ + next;
             h = t1 - t_;
-            p = point(t1);
+            p = eval_.point(t1);
             b = bound(p, t1);
         }
         p = best;
@@ -257,7 +256,6 @@ class IntegralFlattener : public FlatVertexLoop<IntegralFlattener<N>> {
     typename DensityOf<N>::type density_;
     Point prev_; ///< the last vertex
     double tol_sq_, floor_sq_ = 0;
-    double total_ = 0;                      ///< the integral of the density over the curve
     double end_t_ = 1.0, end_integral_ = 0; ///< where the plan ends: 1 or a corner
     double base_ = 0, step_ = 0; ///< the plan: chord j ends where the integral is base + j step
     int planned_ = 0, left_ = 1; ///< chords of the plan emitted, and still to go

@@ -33,8 +33,10 @@ class PowerEval {
         for (int j = 0; j < N; ++j) dpower_[j] = power_.c[j] * double(j + 1);
         end_deriv_ = (c.p[N] - c.p[N - 1]) * double(N);
     }
-    /// B(t), by the power basis also at t = 1.
+    /// B(t), by the power basis; at t = 1 the exact end point (the sum
+    /// rounds there), so a flattener's last vertex is the curve's end bit for bit.
     Point point(double t) const noexcept {
+        if (t == 1.0) return end_;
         const Pair tt = {t, t};
         Pair a = {0, 0};
         for (int j = N; j > 0; --j) a = (a + pair(power_.c[std::size_t(j - 1)])) * tt;
