@@ -123,8 +123,10 @@ int render_batch(const RenderArgs& a, Premul background, const std::vector<Rende
     std::vector<std::thread> helpers;
     try {
         for (int w = 1; w < workers; ++w) helpers.emplace_back([&batch] { batch.work(); });
-    } catch (const std::system_error&) {
-        // Fewer workers than planned: the ones there are take every file.
+    } catch (const std::exception&) {
+        // No thread (system_error) or no memory for its handle (bad_alloc):
+        // fewer workers than planned, and the ones there are take every file;
+        // letting it escape would destroy the started threads unjoined.
     }
     batch.work();
     for (std::thread& t : helpers) t.join();

@@ -92,7 +92,7 @@ int run_render(const RenderArgs& a) {
         }
     };
     int status = render_batch(a, background, *jobs, to_folder && ::isatty(2), sink);
-    if (!a.stats.empty() && a.stats != "-" && !stats.empty()) {
+    if (!a.stats.empty() && a.stats != "-") { // also when empty: no stale file from an earlier run
         if (const std::string err = write_file_atomic(a.stats, stats); !err.empty()) {
             std::fprintf(stderr, "error: --stats %s\n", err.c_str());
             status = std::max(status, kExitFailure);

@@ -22,6 +22,7 @@ bool read_lines(std::istream& in, const std::string& name, std::vector<RenderJob
     std::string line;
     for (long n = 1; std::getline(in, line); ++n) {
         if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (n == 1 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3); // a UTF-8 byte order mark
         if (line.find_first_not_of(" \t") == std::string::npos) continue;
         RenderJob job{line, name + ":" + std::to_string(n), "", ""};
         std::error_code ec;

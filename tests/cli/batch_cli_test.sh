@@ -54,6 +54,18 @@ done
 expect from_list 0 '' render --from-list list.txt -o list/ --width 200 --stats list.jsonl
 same_as_alone list
 err=$(check_records list.jsonl "${paths[@]}" 2>&1) && pass || fail "from_list records: $err"
+# A list saved with a UTF-8 byte order mark (as Windows editors do) reads
+# the same.
+printf '\xEF\xBB\xBFin/curves.svg\r\nin/text.svg\r\n' >bom.txt
+expect bom_list 0 '' render --from-list bom.txt -o bom/ --width 200
+cmp -s bom/curves.png alone_curves.png && cmp -s bom/text.png alone_text.png && pass ||
+    fail "bom_list: $(ls bom)"
+# A list of blank lines renders nothing, and its --stats file is written
+# empty, not left as an earlier run wrote it.
+echo stale >blank.jsonl
+printf '\n  \n' >blank.txt
+expect blank_list 0 '' render --from-list blank.txt -o bl/ --stats blank.jsonl
+[[ -f blank.jsonl && ! -s blank.jsonl ]] && pass || fail "blank_list: stats file holds $(cat blank.jsonl)"
 # From the standard input, records on stdout.
 for s in "${svgs[@]}"; do echo "in/$s.svg"; done |
     "$bin" render --from-list - -o stdin/ --width 200 --stats - >stdin.jsonl 2>/dev/null

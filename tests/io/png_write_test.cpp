@@ -191,5 +191,24 @@ TEST(PngWrite, AutomaticIsOneOfItsTwoCandidates) {
         << automatic.size() << " bytes; none " << none.size() << ", adaptive " << adaptive.size();
 }
 
+// The choice itself, where it is clear, on images tall enough (256 rows) for
+// the choice to sample bands: a smooth gradient compresses far better with
+// its rows filtered (their differences repeat), one flat color no better.
+TEST(PngWrite, AutomaticFiltersAGradientAndNotAFlatColor) {
+    const int w = 256, h = 256;
+    std::vector<std::uint8_t> flat(std::size_t(w) * h * 4), ramp(flat.size());
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            std::uint8_t* f = &flat[(std::size_t(y) * w + std::size_t(x)) * 4];
+            std::uint8_t* r = &ramp[(std::size_t(y) * w + std::size_t(x)) * 4];
+            f[0] = 40, f[1] = 90, f[2] = 200, f[3] = 255;
+            r[0] = std::uint8_t(x), r[1] = std::uint8_t(y), r[2] = std::uint8_t((x + y) / 2),
+            r[3] = 255;
+        }
+    EXPECT_EQ(encode_png(flat, w, h), encode_png(flat, w, h, {4, PngFilter::none}));
+    EXPECT_EQ(encode_png(ramp, w, h), encode_png(ramp, w, h, {4, PngFilter::adaptive}));
+    EXPECT_NE(encode_png(ramp, w, h), encode_png(ramp, w, h, {4, PngFilter::none}));
+}
+
 } // namespace
 } // namespace casteljau

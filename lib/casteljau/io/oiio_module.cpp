@@ -84,8 +84,8 @@ OiioModule find() {
     OiioModule m;
     std::vector<fs::path> paths;
     const char* chosen = std::getenv("CASTELJAU_OIIO_MODULE");
-    if (chosen && *chosen)
-        paths.emplace_back(chosen);
+    if (chosen && *chosen) // absolute: dlopen would search the library path for a bare name
+        paths.emplace_back(fs::absolute(chosen));
     else
         paths = candidates();
     std::string searched, unusable;
