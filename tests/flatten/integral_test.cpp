@@ -212,16 +212,30 @@ TEST(Integral, DensityModelsIntegrateTheDensity) {
     for (int i = 0; i < 300; ++i) {
         const double tol = rng.log_uniform(0.05, 1);
         const QuadBez q = testing::random_quad(rng, rng.log_uniform(10, 1000));
+        const ParabolaDensity d(q.power(), tol);
         const double want = testing::optimal_segments(q.elevate(), tol);
-        EXPECT_NEAR(ParabolaDensity(q.power(), tol).total(), want, 0.003 * want + 1e-9) << i;
+        EXPECT_NEAR(d.total(), want, 0.003 * want + 1e-9) << i;
+        // And from the start to inner points (what the plan inverts), as
+        // the integral over the piece [0, t].
+        for (double t : {0.2, 0.5, 0.8}) {
+            const double part = testing::optimal_segments(q.elevate().subsegment(0, t), tol);
+            EXPECT_NEAR(d.integral_at(t), part, 0.003 * want + 1e-9) << i << " t " << t;
+        }
     }
     for (const auto& [kind, c] : testing::cubic_corpus(7, 20)) {
+        const CubicDensity d(c.power(), 0.25);
         const double want = testing::optimal_segments(c, 0.25);
-        const double got = CubicDensity(c.power(), 0.25).total();
-        EXPECT_NEAR(got, want, (kind == "quarter_circle" ? 0.001 : 0.05) * want) << kind;
+        const double within = (kind == "quarter_circle" ? 0.001 : 0.05) * want;
+        EXPECT_NEAR(d.total(), want, within) << kind;
+        for (double t : {0.2, 0.5, 0.8})
+            EXPECT_NEAR(d.integral_at(t), testing::optimal_segments(c.subsegment(0, t), 0.25),
+                        within)
+                << kind << " t " << t;
     }
 }
 
+// The inverse (the plan's vertices) against the integral, which the test
+// above checks against an independent quadrature.
 TEST(Integral, DensityInverseMatchesItsIntegral) {
     testing::Rng rng(94);
     for (int i = 0; i < 300; ++i) {
