@@ -36,6 +36,16 @@ std::vector<float> gradient(int w, int h) {
     return px;
 }
 
+// The format follows the extension in any case: ".TIF" is TIFF (float) as
+// ".tif" is, where the float test once listed only some spellings.
+TEST(ImageWrite, ExtensionsPickTheFormatInAnyCase) {
+    EXPECT_EQ(image_extension("out/A.PnG"), ".png");
+    for (const char* f : {"a.exr", "a.EXR", "a.tif", "a.Tif", "a.TIFF"})
+        EXPECT_TRUE(stores_float(f)) << f;
+    for (const char* f : {"a.png", "a.PNG", "a.jpg", "a.JPEG", "a"})
+        EXPECT_FALSE(stores_float(f)) << f;
+}
+
 TEST(ImageWrite, RoundTripsPngAndExrAndLeavesNoTemporaryFile) {
     TempDir dir;
     const auto px = gradient(16, 8);

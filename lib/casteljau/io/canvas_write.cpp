@@ -24,9 +24,7 @@ float srgb_to_linear(float v) {
 
 template <class Pixel>
 std::string write_canvas_atomic(const std::string& path, const BasicCanvas<Pixel>& canvas) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
+    const std::string ext = image_extension(path);
     const bool exr = ext == ".exr", jpeg = ext == ".jpg" || ext == ".jpeg";
     const int w = canvas.width(), h = canvas.height();
     const std::size_t values = std::size_t(w) * std::size_t(h) * 4;

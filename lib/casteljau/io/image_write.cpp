@@ -21,9 +21,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// ext: lowercased (image_extension).
 bool wants_float(const std::string& ext) {
-    return ext == ".exr" || ext == ".tif" || ext == ".tiff" || ext == ".EXR" || ext == ".TIF" ||
-           ext == ".TIFF";
+    return ext == ".exr" || ext == ".tif" || ext == ".tiff";
 }
 
 std::vector<float> to_float(std::span<const std::uint8_t> rgba8) {
@@ -37,12 +37,6 @@ std::vector<float> premultiplied(std::span<const float> rgba) {
     for (std::size_t i = 0; i + 3 < out.size(); i += 4)
         for (int c = 0; c < 3; ++c) out[i + std::size_t(c)] *= out[i + 3];
     return out;
-}
-
-bool is_png(std::string ext) {
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
-    return ext == ".png";
 }
 
 /// One byte of PNG's straight values: rounded as channel_to_u8 does (as OIIO
@@ -88,9 +82,14 @@ std::string write_png(const std::string& path, const ImageView& image) {
 
 } // namespace
 
-bool stores_float(const std::string& path) {
-    return wants_float(fs::path(path).extension().string());
+std::string image_extension(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
 }
+
+bool stores_float(const std::string& path) { return wants_float(image_extension(path)); }
 
 // Encoded by OIIO (the module) either into memory, which write_file_atomic
 // then writes with every step checked, or straight into the temporary file.
@@ -102,11 +101,10 @@ std::string write_image_atomic(const std::string& path, const ImageView& image) 
     const fs::path dest(path);
     std::error_code ec;
     if (fs::is_directory(dest, ec)) return path + ": is a folder, not a file";
-    const std::string ext = dest.extension().string();
-    if (is_png(ext)) return write_png(path, image);
-    const bool tiff = ext == ".tif" || ext == ".tiff" || ext == ".TIF" || ext == ".TIFF";
-    const bool exr = ext == ".exr" || ext == ".EXR";
-    const bool jpeg = ext == ".jpg" || ext == ".jpeg" || ext == ".JPG" || ext == ".JPEG";
+    const std::string ext = image_extension(path);
+    if (ext == ".png") return write_png(path, image);
+    const bool tiff = ext == ".tif" || ext == ".tiff", exr = ext == ".exr";
+    const bool jpeg = ext == ".jpg" || ext == ".jpeg";
     const detail::OiioModule& oiio = detail::oiio_module();
     if (!oiio.codec) return path + ": " + detail::oiio_missing("writing " + ext);
     // 8-bit values go to an 8-bit format untouched; a float format gets floats.

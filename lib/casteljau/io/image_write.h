@@ -50,6 +50,10 @@ struct ImageView {
     std::span<const std::uint8_t> rgba8{};
 };
 
+/// The path's extension, lowercased, with its dot (".png"): what picks the
+/// format, in any case (".PNG", ".Tif").
+std::string image_extension(const std::string& path);
+
 /// Whether write_image_atomic stores 32-bit float for this path's extension
 /// (EXR, TIFF); every other format stores 8 bits a channel.
 bool stores_float(const std::string& path);
