@@ -125,6 +125,36 @@ void BM_FlattenKind(benchmark::State& state, Method m, std::string kind) {
     state.counters["segments_per_curve"] = segments / double(curves.size());
 }
 
+// Conics (circular arcs of 20 to 90 degrees, radius 5 to 400 px, as arcs of
+// SVG paths and the o's of text become) by the guided flattener: its
+// homogeneous Hermite pieces (ConicPieces, the default) against de
+// Casteljau subsegments measured by hull_deviation (the reference), at 0.25 px.
+template <class Pieces>
+void BM_FlattenConics(benchmark::State& state, double radius) {
+    testing::Rng rng(2026);
+    std::vector<HConic> arcs;
+    for (int i = 0; i < 1000; ++i) {
+        const double start = rng.uniform(0, 6.3), sweep = rng.uniform(0.35, 1.57);
+        arcs.push_back(HConic::from(Conic::circular_arc(
+            rng.point(500), radius * rng.uniform(0.5, 1.5), start, start + sweep)));
+    }
+    double segments = 0;
+    for (auto _ : state) {
+        double checksum = 0;
+        for (const HConic& c : arcs)
+            for (const FlatVertex& v : GuidedFlattener<HConic, Pieces>(c, 0.25)) {
+                checksum += v.p.x;
+                segments += 1;
+            }
+        benchmark::DoNotOptimize(checksum);
+    }
+    using C = benchmark::Counter;
+    state.counters["ns_per_curve"] =
+        C(double(arcs.size()) * 1e-9, C::kIsIterationInvariantRate | C::kInvert);
+    state.counters["segments_per_curve"] = segments / double(state.iterations() * arcs.size());
+    state.counters["Msegments_per_s"] = C(segments * 1e-6, C::kIsRate);
+}
+
 const int kRegistered = [] {
     for (double tol : kTolerances)
         for (Method m : {Method::Integral, Method::Adaptive, Method::Guided, Method::UniformBest,
@@ -139,6 +169,13 @@ const int kRegistered = [] {
             benchmark::RegisterBenchmark(
                 ("kind/" + std::string(kind) + "/" + kNames[int(m)]).c_str(), BM_FlattenKind, m,
                 std::string(kind));
+    for (double r : {5.0, 20.0, 100.0, 400.0}) {
+        const std::string radius = "/r:" + std::to_string(int(r));
+        benchmark::RegisterBenchmark(("conic/guided" + radius).c_str(),
+                                     BM_FlattenConics<ConicPieces>, r);
+        benchmark::RegisterBenchmark(("conic/guided_subsegment" + radius).c_str(),
+                                     BM_FlattenConics<SubsegmentPieces<HConic>>, r);
+    }
     return 0;
 }();
 

@@ -1,11 +1,12 @@
 // The guided flattener's parts (flatten/guided.h): the cut count, the Hermite
-// form of a piece against de Casteljau's subsegment, and the test that lets a
-// whole cut through untested. The flattener as a whole is in flatten_test.cpp.
+// forms of a piece (polynomial and conic) against de Casteljau's subsegment, and the test that lets
+// a whole cut through untested. The flattener as a whole is in flatten_test.cpp.
 #include "casteljau/flatten/guided.h"
 #include "corpus.h"
 
 #include <cmath>
 #include <gtest/gtest.h>
+#include <vector>
 
 namespace casteljau {
 namespace {
@@ -72,6 +73,56 @@ TEST(Guided, HermitePiecesMeasureAsDeCasteljauSubsegments) {
         const double size = rng.log_uniform(1, 2000);
         expect_hermite_matches_subsegment(testing::random_quad(rng, size), rng);
         expect_hermite_matches_subsegment(testing::random_cubic(rng, size), rng);
+    }
+}
+
+// A conic's piece built from the homogeneous values at its ends measures as
+// the same piece cut by de Casteljau and tested by hull_deviation, also after
+// a move.
+TEST(Guided, ConicPiecesMeasureAsDeCasteljauSubsegments) {
+    testing::Rng rng(8);
+    for (int i = 0; i < 4000; ++i) {
+        const HConic c = HConic::from(testing::random_conic(rng, rng.log_uniform(1, 2000)));
+        const double t0 = rng.uniform(0, 0.9), t1 = rng.integer(0, 3) ? rng.uniform(t0, 1) : 1.0;
+        const double tol = rng.log_uniform(1e-2, 10);
+        ConicPieces pieces(c);
+        if (t0 > 0) {
+            EXPECT_LE(distance(pieces.advance(t0, false), c.eval(t0)),
+                      1e-9 * (1 + c.start().to_vec().length()));
+        }
+        const double hermite = pieces.probe(t0, t1, tol * tol).value();
+        const double direct = guided_excess(c.subsegment(t0, t1), tol * tol).value();
+        EXPECT_NEAR(hermite, direct, 1e-6 * direct + 1e-12)
+            << "conic " << i << " [" << t0 << ", " << t1 << "] tol " << tol;
+        const Point end = pieces.accept();
+        if (t1 == 1.0) {
+            EXPECT_EQ(end, c.end()) << "the end point is exact";
+        } else {
+            EXPECT_LE(distance(end, c.eval(t1)), 1e-9 * (1 + c.start().to_vec().length()));
+        }
+    }
+}
+
+// Whole conics flattened through ConicPieces and through the reference
+// SubsegmentPieces: the same cuts (counts and parameters), the same points up
+// to rounding, and the same exact end.
+TEST(Guided, ConicPiecesFlattenAsSubsegmentPieces) {
+    testing::Rng rng(9);
+    for (int i = 0; i < 2000; ++i) {
+        const HConic c = HConic::from(testing::random_conic(rng, rng.log_uniform(1, 2000)));
+        const double tol = rng.log_uniform(0.05, 2);
+        std::vector<FlatVertex> fast, reference;
+        for (const FlatVertex& v : GuidedFlattener<HConic>(c, tol)) fast.push_back(v);
+        for (const FlatVertex& v : GuidedFlattener<HConic, SubsegmentPieces<HConic>>(c, tol))
+            reference.push_back(v);
+        ASSERT_EQ(fast.size(), reference.size()) << "conic " << i << " tol " << tol;
+        for (std::size_t j = 0; j < fast.size(); ++j) {
+            EXPECT_EQ(fast[j].t, reference[j].t) << "conic " << i << " vertex " << j;
+            EXPECT_LE(distance(fast[j].p, reference[j].p),
+                      1e-9 * (1 + reference[j].p.to_vec().length()))
+                << "conic " << i << " vertex " << j;
+        }
+        EXPECT_EQ(fast.back().p, c.end()) << "conic " << i;
     }
 }
 
