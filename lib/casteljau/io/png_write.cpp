@@ -134,8 +134,16 @@ constexpr std::size_t kBandRows = 8, kBands = 8;
 // the blurred filters example samples at 0.56 and whole at 0.61.
 constexpr double kFilteredWins = 0.65;
 
+/// `automatic`'s choice for an image, and the image's zlib stream when the
+/// trial compressed all of it (a small image is its own sample: the stream
+/// of the rows as the choice filters them), else an empty stream.
+struct FilterChoice {
+    PngFilter filter;
+    Zlib stream;
+};
+
 /// `automatic`'s choice for `image` (unfiltered): none or adaptive.
-PngFilter choose_filter(const Layout& image, libdeflate_compressor* z) {
+FilterChoice choose_filter(const Layout& image, libdeflate_compressor* z) {
     const bool whole = image.height < 2 * kBandRows * kBands;
     const std::size_t bands = whole ? 1 : kBands, rows = whole ? image.height : kBandRows;
     std::vector<std::uint8_t> plain, filtered;
@@ -144,9 +152,32 @@ PngFilter choose_filter(const Layout& image, libdeflate_compressor* z) {
         append_filtered(image, y0, y0 + rows, PngFilter::none, plain);
         append_filtered(image, y0, y0 + rows, PngFilter::adaptive, filtered);
     }
-    const double a = double(compress(z, plain.data(), plain.size()).size);
-    const double b = double(compress(z, filtered.data(), filtered.size()).size);
-    return b < (whole ? 1.0 : kFilteredWins) * a ? PngFilter::adaptive : PngFilter::none;
+    Zlib a = compress(z, plain.data(), plain.size());
+    Zlib b = compress(z, filtered.data(), filtered.size());
+    const bool filter = double(b.size) < (whole ? 1.0 : kFilteredWins) * double(a.size);
+    FilterChoice choice{filter ? PngFilter::adaptive : PngFilter::none, {}};
+    if (whole) choice.stream = std::move(filter ? b : a);
+    return choice;
+}
+
+/// The image's zlib stream, filtered as `options` ask: under 128 rows the
+/// automatic filter's trial stream itself, which was compressed twice already
+/// (once a way); else the rows filtered in place and compressed.
+Zlib filtered_stream(const Layout& image, const PngOptions& options, libdeflate_compressor* z) {
+    FilterChoice choice = options.filter == PngFilter::automatic ? choose_filter(image, z)
+                                                                 : FilterChoice{options.filter, {}};
+    if (choice.stream.size > 0) return std::move(choice.stream);
+    filter_in_place(image, choice.filter);
+    return compress(z, image.bytes, image.height * (image.row_bytes() + 1));
+}
+
+/// The IDAT chunks of a zlib stream (PNG 11.2.4: the stream may be cut
+/// anywhere), each under 2^31 bytes as a chunk must be (PNG 5.3); at most
+/// kIdatBytes each, so that no chunk nears the limit.
+constexpr std::size_t kIdatBytes = std::size_t(1) << 30;
+void put_idat(std::vector<std::uint8_t>& out, const Zlib& stream) {
+    for (std::size_t at = 0; at < stream.size; at += kIdatBytes)
+        put_chunk(out, "IDAT", {stream.bytes.get() + at, std::min(kIdatBytes, stream.size - at)});
 }
 
 } // namespace
@@ -164,14 +195,10 @@ std::vector<std::uint8_t> encode_png(PngRows&& rows, const PngOptions& options) 
         if (opaque(image)) image = drop_alpha(image);
         const Compressor z(libdeflate_alloc_compressor(std::clamp(options.level, 1, 12)));
         if (!z) return {};
-        const PngFilter filter =
-            options.filter == PngFilter::automatic ? choose_filter(image, z.get()) : options.filter;
-        filter_in_place(image, filter);
-        const Zlib idat = compress(z.get(), image.bytes, image.height * (image.row_bytes() + 1));
-        if (idat.size == 0 || idat.size >= 0x80000000u) // PNG 5.3: a chunk holds under 2^31 bytes
-            return {};
+        const Zlib idat = filtered_stream(image, options, z.get());
+        if (idat.size == 0) return {};
         std::vector<std::uint8_t> out{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'}; // PNG 5.2
-        out.reserve(out.size() + 25 + 13 + 16 + 12 + idat.size + 12);
+        out.reserve(out.size() + 25 + 13 + 16 + 12 * (1 + idat.size / kIdatBytes) + idat.size + 12);
         std::uint8_t ihdr[13] = {}; // PNG 11.2.2
         put_u32(ihdr, std::uint32_t(rows.width_)), put_u32(ihdr + 4, std::uint32_t(rows.height_));
         ihdr[8] = 8;                        // bits a channel
@@ -182,7 +209,7 @@ std::vector<std::uint8_t> encode_png(PngRows&& rows, const PngOptions& options) 
         std::uint8_t gamma[4];
         put_u32(gamma, 45455); // gAMA 1/2.2 times 100000, the value 11.3.3.5 gives with sRGB
         put_chunk(out, "gAMA", gamma);
-        put_chunk(out, "IDAT", {idat.bytes.get(), idat.size});
+        put_idat(out, idat);
         put_chunk(out, "IEND", {});
         return out;
     } catch (const std::bad_alloc&) {

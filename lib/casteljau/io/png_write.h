@@ -5,9 +5,9 @@
 //
 // The file: the signature, IHDR (8 bits a channel, not interlaced), sRGB and
 // gAMA (the values are sRGB-encoded; 11.3.3.5 asks for gAMA next to sRGB for
-// decoders that ignore sRGB), one IDAT holding one zlib stream, IEND. Color
-// type 6 (RGBA), or 2 (RGB) when every pixel is opaque: the decoded pixels
-// are the same, the file is smaller.
+// decoders that ignore sRGB), the zlib stream in IDAT chunks of at most 1 GiB,
+// IEND. Color type 6 (RGBA), or 2 (RGB) when every pixel is opaque: the
+// decoded pixels are the same, the file is smaller.
 //
 // Filters (9, 12.8; io/detail/png_filter.h): by default the image is left
 // unfiltered, which suits rendered pictures best (flat fills and edges
