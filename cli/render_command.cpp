@@ -40,7 +40,7 @@ static_assert(kMaxSide == kMaxOutputSide && kMaxPixels == kMaxOutputPixels);
 // message) when the list cannot be read.
 std::optional<std::vector<RenderJob>> gather_inputs(const RenderArgs& a) {
     std::vector<RenderJob> jobs;
-    for (const std::string& in : a.inputs) jobs.push_back({in, "", "", ""});
+    for (const std::string& in : a.inputs) jobs.push_back(checked_job(in, ""));
     std::string error;
     if (!a.from_list.empty() && !read_input_list(a.from_list, jobs, error)) {
         std::fprintf(stderr, "casteljau render: %s\n", error.c_str());
@@ -106,7 +106,8 @@ int run_render(const RenderArgs& a) {
 Command add_render_command(CLI::App& app) {
     auto a = std::make_shared<RenderArgs>();
     CLI::App* cmd = app.add_subcommand("render", "Render SVG files to images");
-    cmd->add_option("inputs", a->inputs, "SVG files")->check(CLI::ExistingFile);
+    // Not CLI::ExistingFile: a missing file among many fails alone (checked_job).
+    cmd->add_option("inputs", a->inputs, "SVG files");
     cmd->add_option("--from-list", a->from_list,
                     "Also render the SVG files listed in FILE, one path a line (- for the "
                     "standard input); the output is then a folder");

@@ -24,18 +24,22 @@ bool read_lines(std::istream& in, const std::string& name, std::vector<RenderJob
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (n == 1 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3); // a UTF-8 byte order mark
         if (line.find_first_not_of(" \t") == std::string::npos) continue;
-        RenderJob job{line, name + ":" + std::to_string(n), "", ""};
-        std::error_code ec;
-        if (!fs::exists(line, ec))
-            job.error = located(job) + ": does not exist";
-        else if (fs::is_directory(line, ec))
-            job.error = located(job) + ": is a folder, not an SVG file";
-        jobs.push_back(std::move(job));
+        jobs.push_back(checked_job(line, name + ":" + std::to_string(n)));
     }
     return !in.bad();
 }
 
 } // namespace
+
+RenderJob checked_job(const std::string& input, const std::string& where) {
+    RenderJob job{input, where, "", ""};
+    std::error_code ec;
+    if (!fs::exists(input, ec))
+        job.error = located(job) + ": does not exist";
+    else if (fs::is_directory(input, ec))
+        job.error = located(job) + ": is a folder, not an SVG file";
+    return job;
+}
 
 bool read_input_list(const std::string& list, std::vector<RenderJob>& jobs, std::string& error) {
     if (list == "-") {

@@ -21,8 +21,14 @@ struct RenderJob {
     std::string error; ///< a problem found before rendering: the file fails with it
 };
 
-/// Appends the paths of the list `list` ("-": standard input) to `jobs`. A
-/// listed file that does not exist gets its error. False, with `error` set,
+/// The job of rendering `input` (`where`: "LIST:LINE", or "" for an
+/// argument), with its error when the file does not exist or is a folder:
+/// one check for arguments and listed files alike, so that a missing file
+/// fails alone (status 2, its record says why) and the others render.
+RenderJob checked_job(const std::string& input, const std::string& where);
+
+/// Appends the paths of the list `list` ("-": standard input) to `jobs`, as
+/// checked_job makes them. False, with `error` set,
 /// when the list itself cannot be read.
 bool read_input_list(const std::string& list, std::vector<RenderJob>& jobs, std::string& error);
 

@@ -96,6 +96,15 @@ cmp -s sm/curves.png alone_curves.png && cmp -s sm/text.png alone_text.png && [[
 err=$(check_records sm.jsonl in/curves.svg in/nope.svg in/text.svg 2>&1) && pass || fail "missing_listed records: $err"
 python3 -c 'import json,sys; r=[json.loads(l) for l in open("sm.jsonl")][1]; sys.exit(not (r["status"]==2 and "does not exist" in r["error"]))' &&
     pass || fail "missing_listed: $(sed -n 2p sm.jsonl)"
+# The same for a missing file among the arguments (they once stopped the
+# whole call before any file was drawn), and for a folder given as one.
+expect missing_argument 2 'in/nope.svg: does not exist' \
+    render in/curves.svg in/nope.svg in in/text.svg -o sa/ --width 200 --stats sa.jsonl
+cmp -s sa/curves.png alone_curves.png && cmp -s sa/text.png alone_text.png && [[ ! -e sa/nope.png ]] &&
+    pass || fail "missing_argument outputs: $(ls sa)"
+err=$(check_records sa.jsonl in/curves.svg in/nope.svg in in/text.svg 2>&1) && pass || fail "missing_argument records: $err"
+python3 -c 'import json,sys; r=[json.loads(l) for l in open("sa.jsonl")]; sys.exit(not (r[1]["status"]==2 and "does not exist" in r[1]["error"] and r[2]["status"]==2 and "is a folder" in r[2]["error"]))' &&
+    pass || fail "missing_argument: $(sed -n 2,3p sa.jsonl)"
 # A file that cannot be drawn among others (--strict makes bad path data
 # such a file): the same.
 cp "$data/bad_path.svg" in_bad.svg
