@@ -32,6 +32,19 @@ TEST(Point, DistanceToSegmentCoversEndsAndInterior) {
     EXPECT_DOUBLE_EQ(distance_to_segment({3, 4}, {0, 0}, {0, 0}), 5.0);
 }
 
+// The division-free form agrees with distance_to_segment, squared, on the
+// ends, the interior and a segment that is a point.
+TEST(Point, SquaredDistanceToSegmentIsTheDistanceSquared) {
+    testing::Rng rng(2);
+    for (int i = 0; i < 2000; ++i) {
+        const Point a = rng.point(100), b = i % 10 ? rng.point(100) : a, p = rng.point(100);
+        const SquaredDistance d = segment_distance_sq(p - a, b - a);
+        const double want = distance_to_segment(p, a, b);
+        ASSERT_GT(d.den, 0) << "case " << i;
+        EXPECT_NEAR(d.num / d.den, want * want, 1e-9 * (1 + want * want)) << "case " << i;
+    }
+}
+
 TEST(Affine, CompositionAppliesRightToLeft) {
     testing::Rng rng(1);
     for (int i = 0; i < 100; ++i) {

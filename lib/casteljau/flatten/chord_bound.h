@@ -61,25 +61,16 @@ struct ChordBound {
 
 namespace chord_bound_detail {
 
-/// The squared distance from the point at u (relative to the chord's start) to the chord v.
-inline double segment_dist_sq(Vec2 u, Vec2 v, double len_sq) noexcept {
-    const double along = u.dot(v);
-    if (along <= 0 || len_sq == 0) return u.length_sq();
-    if (along >= len_sq) return (u - v).length_sq();
-    const double across = u.cross(v);
-    return across * across / len_sq;
-}
-
 /// The bound that holds for any piece: the smaller of the parametric and the
 /// hull bound, from the inner points' offsets r_i = P_i - L_i.
 template <int N>
 [[gnu::noinline]] ChordBound overshoot_bound(const Vec2 (&r)[N - 1], Vec2 v) noexcept {
     constexpr double w = N == 2 ? 0.5 : 0.75; // 1 - 2^(1-N)
-    const double len_sq = v.length_sq();
     double param = 0, hull = 0;
     for (int i = 0; i < N - 1; ++i) {
         param = std::max(param, r[i].length_sq());
-        hull = std::max(hull, segment_dist_sq(v * (double(i + 1) / N) + r[i], v, len_sq));
+        const SquaredDistance d = segment_distance_sq(v * (double(i + 1) / N) + r[i], v);
+        hull = std::max(hull, d.num / d.den);
     }
     return {std::min(w * w * param, hull), 1};
 }

@@ -230,14 +230,9 @@ class ConicPieces {
         const double half = 0.5 * (t1 - t0);
         const HPoint mid{prev_.h.x + half * prev_.d.x, prev_.h.y + half * prev_.d.y,
                          prev_.h.w + half * prev_.d.w};
-        // distance_to_segment(P1, P0, P2)^2 as a fraction: from the nearer
-        // end when P1 projects outside the chord, else across it.
-        const Vec2 u = mid.project() - prev_.p, v = next_.p - prev_.p;
-        const double along = u.dot(v), len_sq = v.length_sq();
-        if (along <= 0) return {u.length_sq(), scaled_tol};
-        if (along >= len_sq) return {(u - v).length_sq(), scaled_tol};
-        const double across = u.cross(v);
-        return {across * across, scaled_tol * len_sq};
+        // distance_to_segment(P1, P0, P2)^2, as a fraction.
+        const SquaredDistance d = segment_distance_sq(mid.project() - prev_.p, next_.p - prev_.p);
+        return {d.num, scaled_tol * d.den};
     }
     /// Makes the last probed end the start of the next piece; returns its point.
     Point accept() noexcept {

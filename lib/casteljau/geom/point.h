@@ -102,4 +102,21 @@ inline double distance_to_segment(Point p, Point a, Point b) {
     return (p - lerp(a, b, t)).length();
 }
 
+/// A squared distance as the fraction num / den (den > 0), for callers that
+/// compare it and need no division.
+struct SquaredDistance {
+    double num, den;
+};
+
+/// The squared distance from a + u to the closed segment from a to a + v:
+/// to the nearer end where the point projects outside the segment (or the
+/// segment is a point), else to its line, cross(u, v)^2 / |v|^2.
+inline SquaredDistance segment_distance_sq(Vec2 u, Vec2 v) {
+    const double along = u.dot(v), len_sq = v.length_sq();
+    if (along <= 0 || len_sq == 0) return {u.length_sq(), 1};
+    if (along >= len_sq) return {(u - v).length_sq(), 1};
+    const double across = u.cross(v);
+    return {across * across, len_sq};
+}
+
 } // namespace casteljau
