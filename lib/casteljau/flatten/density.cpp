@@ -23,12 +23,22 @@ Pair sqrt_pair(Pair x) noexcept {
 #endif
 }
 
+// The cubic's hodograph in the power basis: B'(t) = d0 + d1 t + d2 t^2,
+// B''(t) = d1 + 2 d2 t, B'''(t) = f = 2 d2.
+struct Hodograph {
+    Vec2 d0, d1, d2, f;
+    explicit Hodograph(const PowerCurve<3>& pc) noexcept
+        : d0(pc.c[0]), d1(pc.c[1] * 2.0), d2(pc.c[2] * 3.0), f(d2 * 2.0) {}
+    Vec2 deriv(double t) const noexcept { return d0 + (d1 + d2 * t) * t; }
+    Vec2 deriv2(double t) const noexcept { return d1 + d2 * (2 * t); }
+};
+
 } // namespace
 
 int CubicDensity::sample(const PowerCurve<3>& pc, double tol, Samples& w, Samples& dw,
                          Samples& inv_w, Samples& speed_sq) noexcept {
-    // B' = d0 + d1 t + d2 t^2, B'' = d1 + 2 d2 t, B''' = 2 d2.
-    const Vec2 d0 = pc.c[0], d1 = pc.c[1] * 2.0, d2 = pc.c[2] * 3.0, f = d2 * 2.0;
+    const Hodograph hd(pc);
+    const Vec2 d0 = hd.d0, d1 = hd.d1, d2 = hd.d2, f = hd.f;
     const double k = 1 / std::sqrt(8 * tol);
     const Pair zero = {0, 0}, one = {1, 1};
     int slowest = 0;
@@ -62,9 +72,7 @@ int CubicDensity::sample(const PowerCurve<3>& pc, double tol, Samples& w, Sample
 
 void CubicDensity::find_corner(const PowerCurve<3>& pc, double tol, int slowest,
                                const Samples& speed_sq) noexcept {
-    const Vec2 d0 = pc.c[0], d1 = pc.c[1] * 2.0, d2 = pc.c[2] * 3.0, f = d2 * 2.0;
-    const auto deriv = [&](double t) { return d0 + (d1 + d2 * t) * t; };
-    const auto deriv2 = [&](double t) { return d1 + d2 * (2 * t); };
+    const Hodograph hd(pc);
     const double r = kCornerRadius * tol;
     // A corner has |B'|^2 <= r |B''| at its minimum (below: |B' x B''| <= |B'| |B''|).
     // Most curves' speed stays far above that: the parabola through the three
@@ -75,14 +83,14 @@ void CubicDensity::find_corner(const PowerCurve<3>& pc, double tol, int slowest,
     const double a = speed_sq[k - 1], b = speed_sq[k], c = speed_sq[k + 1];
     const double curv = a - 2 * b + c; // twice the parabola's t^2 coefficient, in samples
     const double least = curv > 0 ? b - (c - a) * (c - a) / (8 * curv) : std::min({a, b, c});
-    const double bend = std::max(deriv2(double(k - 1) * kH).length_sq(),
-                                 deriv2(double(k + 1) * kH).length_sq()); // |B''|^2 at most
+    const double bend = std::max(hd.deriv2(double(k - 1) * kH).length_sq(),
+                                 hd.deriv2(double(k + 1) * kH).length_sq()); // |B''|^2 at most
     if (least > 0 && least * least > 256 * r * r * bend) return;
     // |B'|^2 has a minimum inside the samples around the slowest one when
     // g = B' . B'' (half its derivative) changes sign from - to + there.
     double lo = double(std::max(slowest - 1, 0)) * kH;
     double hi = double(std::min(slowest + 1, kDensityPanels)) * kH;
-    if (!(deriv(lo).dot(deriv2(lo)) < 0 && deriv(hi).dot(deriv2(hi)) > 0)) return;
+    if (!(hd.deriv(lo).dot(hd.deriv2(lo)) < 0 && hd.deriv(hi).dot(hd.deriv2(hi)) > 0)) return;
     // Newton's method on g from the parabola's minimum (the estimate above,
     // a closer start than the bracket's middle: 10% fewer steps on the
     // bench/flatten corpus), kept inside the bracket (bisection when it
@@ -91,8 +99,8 @@ void CubicDensity::find_corner(const PowerCurve<3>& pc, double tol, int slowest,
     double t = curv > 0 ? (double(k) + (a - c) / (2 * curv)) * kH : 0.5 * (lo + hi);
     if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
     for (int step = 0; step < 40; ++step) {
-        const Vec2 d = deriv(t), e = deriv2(t);
-        const double g = d.dot(e), slope = e.length_sq() + d.dot(f);
+        const Vec2 d = hd.deriv(t), e = hd.deriv2(t);
+        const double g = d.dot(e), slope = e.length_sq() + d.dot(hd.f);
         (g < 0 ? lo : hi) = t;
         double next = slope > 0 ? t - g / slope : 0.5 * (lo + hi);
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
@@ -102,8 +110,8 @@ void CubicDensity::find_corner(const PowerCurve<3>& pc, double tol, int slowest,
     }
     // The radius of curvature |B'|^3 / |B' x B''| below kCornerRadius tol, as
     // squares; an exact cusp (B' = 0) is a corner.
-    const Vec2 d = deriv(t);
-    const double p = d.length_sq(), q = d.cross(deriv2(t));
+    const Vec2 d = hd.deriv(t);
+    const double p = d.length_sq(), q = d.cross(hd.deriv2(t));
     if (t > 0 && t < 1 && p * p * p <= r * r * q * q) corner_ = t;
 }
 
