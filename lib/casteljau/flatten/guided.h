@@ -34,7 +34,8 @@
 // ended. A piece's control points come from its ends: for Bez<N> from the
 // point and the derivative there (the Hermite form: the piece over [t0, t1]
 // has P_1 = B(t0) + (h/N) B'(t0) and P_{N-1} = B(t1) - (h/N) B'(t1), h = t1 - t0),
-// with B and B' evaluated in the power basis; other curves take
+// with B and B' evaluated in the power basis; for conics the same in
+// homogeneous coordinates (ConicPieces); other curves take
 // subsegment(t0, t1). Unlike cutting off pieces by successive splits, no
 // piece waits on the one before it, and a level is 40 bytes.
 //
