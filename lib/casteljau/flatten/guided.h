@@ -215,9 +215,10 @@ class HermitePieces {
 /// H(t0) + (h/2) H'(t0) and H(t1), h = t1 - t0: subsegment(t0, t1)'s piece up
 /// to rounding, from values kept from the last probe instead of two de
 /// Casteljau cuts, and measured with hull_deviation's bound (the distance from
-/// the middle control point to the chord) in squares, with no division or
-/// square root: 4.5-5x faster per segment than SubsegmentPieces<HConic>, for
-/// the same cuts (bench/flatten's conic/ benchmarks).
+/// the middle control point to the chord) in squares: no square root, and no
+/// division but the projections of the middle and the end point. 4.5-5x
+/// faster per segment than SubsegmentPieces<HConic>, for the same cuts
+/// (bench/flatten's conic/ benchmarks).
 class ConicPieces {
   public:
     /// The pieces of c, starting at t = 0.
@@ -270,8 +271,9 @@ class ConicPieces {
     Sample prev_, next_;
 };
 
-/// Pieces of any other curve (Bezier, HConic, RationalBezier) by parameter,
-/// through subsegment; the same interface as HermitePieces.
+/// Pieces of any other curve (Bezier, RationalBezier; and HConic as the
+/// reference for ConicPieces) by parameter, through subsegment; the same
+/// interface as HermitePieces.
 template <class Curve>
 class SubsegmentPieces {
   public:
@@ -305,7 +307,7 @@ template <int N>
 struct GuidedPiecesOf<Bez<N>> {
     using type = HermitePieces<N>; ///< the pieces
 };
-/// ...and conics, in its homogeneous form.
+/// ...and conics, in their homogeneous Hermite form.
 template <>
 struct GuidedPiecesOf<HConic> {
     using type = ConicPieces; ///< the pieces
