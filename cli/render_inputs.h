@@ -28,8 +28,8 @@ struct RenderJob {
 RenderJob checked_job(const std::string& input, const std::string& where);
 
 /// Appends the paths of the list `list` ("-": standard input) to `jobs`, as
-/// checked_job makes them. False, with `error` set,
-/// when the list itself cannot be read.
+/// checked_job makes them. False, with `error` set, when the list itself
+/// cannot be read.
 bool read_input_list(const std::string& list, std::vector<RenderJob>& jobs, std::string& error);
 
 /// Sets each job's output: `output` itself, or FOLDER/STEM.png when

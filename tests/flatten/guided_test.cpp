@@ -1,6 +1,7 @@
 // The guided flattener's parts (flatten/guided.h): the cut count, the Hermite
-// forms of a piece (polynomial and conic) against de Casteljau's subsegment, and the test that lets
-// a whole cut through untested. The flattener as a whole is in flatten_test.cpp.
+// forms of a piece (polynomial and conic) against de Casteljau's subsegment,
+// and the test that lets a whole cut through untested. The flattener as a
+// whole is in flatten_test.cpp.
 #include "casteljau/flatten/guided.h"
 #include "corpus.h"
 

@@ -242,7 +242,10 @@ class ConicPieces {
         return prev_.p;
     }
     /// Moves to t1 without a test; returns the point there.
-    Point advance(double t1, bool) noexcept { return accept_at(t1); }
+    Point advance(double t1, bool) noexcept {
+        next_ = at(t1);
+        return accept();
+    }
     /// No bound on even cuts: every piece is tested.
     bool even_cut_is_flat(double, double, double, double) const noexcept { return false; }
 
@@ -261,10 +264,6 @@ class ConicPieces {
                        a_.w + t * (b_.w + t * c_.w)};
         const double t2 = 2 * t;
         return {h, {b_.x + t2 * c_.x, b_.y + t2 * c_.y, b_.w + t2 * c_.w}, h.project()};
-    }
-    Point accept_at(double t) noexcept {
-        next_ = at(t);
-        return accept();
     }
     HPoint a_, b_, c_;       ///< H in the power basis
     HPoint end_, end_deriv_; ///< H(1) and H'(1), exact

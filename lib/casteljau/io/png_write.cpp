@@ -172,12 +172,10 @@ Zlib filtered_stream(const Layout& image, const PngOptions& options, libdeflate_
 }
 
 /// The IDAT chunks of a zlib stream (PNG 11.2.4: the stream may be cut
-/// anywhere), each under 2^31 bytes as a chunk must be (PNG 5.3); at most
-/// kIdatBytes each, so that no chunk nears the limit.
-constexpr std::size_t kIdatBytes = std::size_t(1) << 30;
-void put_idat(std::vector<std::uint8_t>& out, const Zlib& stream) {
-    for (std::size_t at = 0; at < stream.size; at += kIdatBytes)
-        put_chunk(out, "IDAT", {stream.bytes.get() + at, std::min(kIdatBytes, stream.size - at)});
+/// anywhere), each of at most `chunk` bytes.
+void put_idat(std::vector<std::uint8_t>& out, const Zlib& stream, std::size_t chunk) {
+    for (std::size_t at = 0; at < stream.size; at += chunk)
+        put_chunk(out, "IDAT", {stream.bytes.get() + at, std::min(chunk, stream.size - at)});
 }
 
 } // namespace
@@ -197,8 +195,11 @@ std::vector<std::uint8_t> encode_png(PngRows&& rows, const PngOptions& options) 
         if (!z) return {};
         const Zlib idat = filtered_stream(image, options, z.get());
         if (idat.size == 0) return {};
+        // PNG 5.3: a chunk holds under 2^31 bytes.
+        const std::size_t chunk =
+            std::clamp(options.idat_bytes, std::size_t(1), PngOptions{}.idat_bytes);
         std::vector<std::uint8_t> out{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'}; // PNG 5.2
-        out.reserve(out.size() + 25 + 13 + 16 + 12 * (1 + idat.size / kIdatBytes) + idat.size + 12);
+        out.reserve(out.size() + 25 + 13 + 16 + 12 * (1 + idat.size / chunk) + idat.size + 12);
         std::uint8_t ihdr[13] = {}; // PNG 11.2.2
         put_u32(ihdr, std::uint32_t(rows.width_)), put_u32(ihdr + 4, std::uint32_t(rows.height_));
         ihdr[8] = 8;                        // bits a channel
@@ -209,7 +210,7 @@ std::vector<std::uint8_t> encode_png(PngRows&& rows, const PngOptions& options) 
         std::uint8_t gamma[4];
         put_u32(gamma, 45455); // gAMA 1/2.2 times 100000, the value 11.3.3.5 gives with sRGB
         put_chunk(out, "gAMA", gamma);
-        put_idat(out, idat);
+        put_idat(out, idat, chunk);
         put_chunk(out, "IEND", {});
         return out;
     } catch (const std::bad_alloc&) {

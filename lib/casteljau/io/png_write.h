@@ -5,7 +5,7 @@
 //
 // The file: the signature, IHDR (8 bits a channel, not interlaced), sRGB and
 // gAMA (the values are sRGB-encoded; 11.3.3.5 asks for gAMA next to sRGB for
-// decoders that ignore sRGB), the zlib stream in IDAT chunks of at most 1 GiB,
+// decoders that ignore sRGB), the zlib stream in IDAT chunks (of 1 GiB at most),
 // IEND. Color type 6 (RGBA), or 2 (RGB) when every pixel is opaque: the
 // decoded pixels are the same, the file is smaller.
 //
@@ -40,6 +40,10 @@ struct PngOptions {
     /// 1.16x) for a few percent more time (bench/io/png_bench).
     int level = 4;
     PngFilter filter = PngFilter::automatic;
+    /// Most bytes of the zlib stream an IDAT chunk holds (PNG 5.3: under
+    /// 2^31), 1 to 2^30; decoders join the chunks, so only tests, which
+    /// check that, need it smaller.
+    std::size_t idat_bytes = std::size_t(1) << 30;
 };
 
 /// An image's rows, to be filled with straight RGBA and encoded. The

@@ -2,9 +2,10 @@
 //
 // Edges are sorted by their first row once (mostly a counting sort); rows
 // are visited top to bottom, in strips of kStripRows, with an active list of
-// the edges crossing the strip, and rows without edges are skipped, so the cost is O(E + R + sum
-// over rows of (active edges + swept columns)), R the rows from the first edge's top to the last's
-// within the band: it grows with the outline and the covered spans, never with the canvas area. All
+// the edges crossing the strip, and rows without edges are skipped, so the
+// cost is O(E + R + sum over rows of (active edges + swept columns)), R the
+// rows from the first edge's top to the last's within the band: it grows
+// with the outline and the covered spans, never with the canvas area. All
 // buffers are kept between calls.
 //
 // Antialiased mode deposits exact areas (accumulate.h). Aliased mode samples
