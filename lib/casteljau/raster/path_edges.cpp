@@ -68,6 +68,17 @@ FlattenStats add_path_edges(const Path& path, const Affine& to_device,
                             const FlattenOptions& options, EdgeList& edges, bool measure_error) {
     FlattenStats stats;
     EdgeEmitter emit{edges, options, stats, measure_error, {}};
+    // A path inside the clip and the band: every curve's box is inside too
+    // (its control points lie in the path's box), so cull_and_flatten would
+    // flatten each whole; going there directly saves its box tests and its
+    // walk's copies (glyphs_5k: 6% of the frame, cairo_compare_bench). The
+    // one-pixel margin absorbs the rounding between the box's mapped corners
+    // and the curves' mapped control points.
+    const Rect box = mapped_box(path.control_bounds(), to_device);
+    const PixelRect& clip = edges.clip();
+    const bool inside = box.x0 >= clip.x0 + 1 && box.x1 <= clip.x1 - 1 &&
+                        box.y0 >= std::max(clip.y0, edges.row_begin()) + 1 &&
+                        box.y1 <= std::min(clip.y1, edges.row_end()) - 1;
     for (const Subpath& sub : path.subpaths()) {
         for (const Segment& seg : sub.segments) {
             ++stats.curves_in;
@@ -77,6 +88,8 @@ FlattenStats add_path_edges(const Path& path, const Affine& to_device,
                     if constexpr (std::is_same_v<std::decay_t<decltype(dev)>, Line>) {
                         edges.add_line(dev.start(), dev.end());
                         ++stats.segments_out;
+                    } else if (inside) {
+                        emit.flatten(dev);
                     } else {
                         emit.cull_and_flatten(dev);
                     }

@@ -19,6 +19,8 @@
 // kCullDepth halvings (a curve over 2^40 times the canvas, up to 1e308 px) is
 // drawn as its chord: flattening it would square coordinates past the double
 // range, and no image could show the difference at that scale anyway.
+// A path whose whole control box lies inside the canvas and the band of rows
+// asked for skips the tests: every curve of it would be flattened whole.
 //
 // Filling closes every subpath (SVG 1.1, 11.3): an open subpath gets the
 // closing line from its last point to its start.
