@@ -35,7 +35,9 @@ class PowerEval {
     }
     /// B(t), by the power basis; at t = 1 the exact end point (the sum
     /// rounds there), so a flattener's last vertex is the curve's end bit for bit.
-    Point point(double t) const noexcept {
+    /// This and at() are inlined by force: they are every flattener's
+    /// per-vertex work, which a call would double (guided.h's probe).
+    [[gnu::always_inline]] Point point(double t) const noexcept {
         if (t == 1.0) return end_;
         const Pair tt = {t, t};
         Pair a = {0, 0};
@@ -43,7 +45,7 @@ class PowerEval {
         return power_.c0 + Vec2{a[0], a[1]};
     }
     /// B(t) and B'(t); at t = 1 the exact end point and end derivative.
-    Sample at(double t) const noexcept {
+    [[gnu::always_inline]] Sample at(double t) const noexcept {
         if (t == 1.0) return {end_, end_deriv_};
         const Pair tt = {t, t};
         Pair d = pair(dpower_[N - 1]);
