@@ -33,6 +33,23 @@ struct Hodograph {
     Vec2 deriv2(double t) const noexcept { return d1 + d2 * (2 * t); }
 };
 
+// The cubic term of the density (density.h): where the curve bends little
+// and its third derivative dominates (beside inflections, near cusps),
+// w3 = cbrt(|B' x B'''| / (9 sqrt(3) |B'| tol)) / 2 replaces w when larger,
+// with no slope (w' of the other term would mislead the panel's correction).
+// The test w3 > w is taken in sixth powers, q3^2 |B'| tol > (243 * 64 / 512) q^3
+// with q = B' x B'' and q3 = B' x B''', so that the cube root is paid only
+// where it may be taken.
+void take_cubic_term(double q, double q3, double p, double tol, double& w, double& dw,
+                     double& inv_w) noexcept {
+    constexpr double k9r3 = 15.588457268119896; // 9 sqrt(3)
+    const double aq = std::fabs(q), speed = std::sqrt(p);
+    if (!(p > 0) || !(q3 * q3 * speed * tol > 30.375 * aq * aq * aq)) return;
+    const double w3 = 0.5 * std::cbrt(std::fabs(q3) / (k9r3 * speed * tol));
+    if (!(w3 > w)) return;
+    w = w3, dw = 0, inv_w = 1 / w3;
+}
+
 } // namespace
 
 int CubicDensity::sample(const PowerCurve<3>& pc, double tol, Samples& w, Samples& dw,
@@ -59,12 +76,14 @@ int CubicDensity::sample(const PowerCurve<3>& pc, double tol, Samples& w, Sample
         const Pair root = sqrt_pair(sqrt_pair(live ? q * q * q * A : zero)) * k;
         const Pair slope = root * ((dx * f.y - dy * f.x) * p - q * (dx * ex + dy * ey)) * (0.5 * A);
         const Pair inverse = live ? one / (live ? root : one) : Pair{DBL_MAX, DBL_MAX};
+        const Pair q3 = dx * f.y - dy * f.x; // B' x B'''
         for (std::size_t j = 0; j < 2 && i + j <= kDensityPanels; ++j) {
             w[i + j] = root[j];
             dw[i + j] = live[j] ? slope[j] : 0;
             inv_w[i + j] = inverse[j];
             speed_sq[i + j] = p[j];
             if (p[j] < least) least = p[j], slowest = int(i + j);
+            take_cubic_term(q[j], q3[j], p[j], tol, w[i + j], dw[i + j], inv_w[i + j]);
         }
     }
     return slowest;
