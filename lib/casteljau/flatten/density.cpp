@@ -37,15 +37,15 @@ struct Hodograph {
 // and its third derivative dominates (beside inflections, near cusps),
 // w3 = cbrt(|B' x B'''| / (9 sqrt(3) |B'| tol)) / 2 replaces w when larger,
 // with no slope (w' of the other term would mislead the panel's correction).
-// The test w3 > w is taken in sixth powers, q3^2 |B'| tol > (243 * 64 / 512) q^3
-// with q = B' x B'' and q3 = B' x B''', so that the cube root is paid only
-// where it may be taken.
+// The test w3 > w is taken in twelfth powers, q3^4 |B'|^2 tol^2 > (243 * 64 /
+// 512)^2 |q|^6 with q = B' x B'' and q3 = B' x B''', so that the square root
+// and the cube root are paid only where w3 may be taken.
 void take_cubic_term(double q, double q3, double p, double tol, double& w, double& dw,
                      double& inv_w) noexcept {
     constexpr double k9r3 = 15.588457268119896; // 9 sqrt(3)
-    const double aq = std::fabs(q), speed = std::sqrt(p);
-    if (!(p > 0) || !(q3 * q3 * speed * tol > 30.375 * aq * aq * aq)) return;
-    const double w3 = 0.5 * std::cbrt(std::fabs(q3) / (k9r3 * speed * tol));
+    const double q3t = q3 * q3 * tol, q_3 = q * q * q;
+    if (!(p > 0) || !(q3t * q3t * p > (30.375 * 30.375) * q_3 * q_3)) return;
+    const double w3 = 0.5 * std::cbrt(std::fabs(q3) / (k9r3 * std::sqrt(p) * tol));
     if (!(w3 > w)) return;
     w = w3, dw = 0, inv_w = 1 / w3;
 }
