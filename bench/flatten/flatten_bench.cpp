@@ -75,10 +75,8 @@ void flatten_with(const CubicBez& c, double tol, int best_n, Sink&& sink) {
         flatten_levien(c, tol, sink);
 }
 
-// f(std::integral_constant<Method, m>): each method's loops compiled on
-// their own, so that no method's code is inlined or not by how many others
-// share a switch (the integral flattener measured 0.7 against 1.0 us a curve
-// inside one switch of seven).
+// f(std::integral_constant<Method, m>): the method chosen once, outside the
+// loops, which are then compiled for it alone (corpus_pass).
 template <class F>
 void with_method(Method m, F&& f) {
     using M = Method;
@@ -136,10 +134,10 @@ Prepared prepare(Method m, double tol) {
     return measure(m, tol, lo * tol);
 }
 
-// One timed pass over the corpus, compiled apart for each method: with every
-// method's loop inlined into one function, the integral flattener measured
-// 0.97 us a curve against 0.73 alone (register pressure and layout), and
-// guided 0.44 against 0.36.
+// One timed pass over the corpus, a function of its own for each method: with
+// every method's loop in BM_Flatten's body, guided measured 0.44 us a curve
+// against 0.36. (The integral flattener's 0.98 against 0.73 was its helpers
+// left out of line, integral.h.)
 template <Method M>
 [[gnu::noinline]] double corpus_pass(const std::vector<testing::NamedCubic>& curves,
                                      const Prepared& p) {

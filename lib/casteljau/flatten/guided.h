@@ -102,7 +102,8 @@ struct GuidedExcess {
 /// extent for Bez<N>, so the loop over them unrolls). Inlined by force into
 /// the probes (HermitePieces::probe says why).
 template <std::size_t E>
-[[gnu::always_inline]] inline GuidedExcess polynomial_excess(std::span<const Point, E> p, double scaled_tol) noexcept {
+[[gnu::always_inline]] inline GuidedExcess polynomial_excess(std::span<const Point, E> p,
+                                                             double scaled_tol) noexcept {
     const std::size_t n = p.size() - 1;
     const Vec2 chord = p[n] - p[0];
     const double len_sq = chord.length_sq();
