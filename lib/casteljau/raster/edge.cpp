@@ -14,17 +14,8 @@ void EdgeList::reset(PixelRect clip, int row_begin, int row_end) {
     row_end_ = std::min(row_end, clip.y1);
 }
 
-void EdgeList::add_line(Point a, Point b) {
-    if (a.y == b.y) return;
-    const float dir = a.y < b.y ? 1.0f : -1.0f;
-    if (a.y > b.y) std::swap(a, b);
-    // Outside the band: dropped, before any arithmetic that could differ.
-    if (b.y <= row_begin_ || a.y >= row_end_) return;
+void EdgeList::add_clipped(Point a, Point b, float dir) {
     const double top = clip_.y0, bottom = clip_.y1, left = clip_.x0, right = clip_.x1;
-    if (top <= a.y && b.y <= bottom && std::min(a.x, b.x) >= left && std::max(a.x, b.x) <= right) {
-        push(a.x, a.y, b.x, b.y, dir); // inside the clip (most edges): what the cuts below give
-        return;
-    }
     // y clip: nothing outside [y0, y1] covers a row.
     // Interpolation that stays finite for any finite end points, up to 1e308,
     // where a plain difference of two coordinates overflows (and inf * 0 is
@@ -55,11 +46,6 @@ void EdgeList::add_line(Point a, Point b) {
     };
     for (int i = 0; i + 1 < n; ++i)
         if (ys[i] < ys[i + 1]) push(x_on(ys[i]), ys[i], x_on(ys[i + 1]), ys[i + 1], dir);
-}
-
-void EdgeList::push(double x0, double y0, double x1, double y1, float dir) {
-    const float fy0 = float(y0), fy1 = float(y1);
-    if (fy0 < fy1) edges_.push_back({float(x0), fy0, float(x1), fy1, dir});
 }
 
 } // namespace casteljau

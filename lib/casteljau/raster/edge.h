@@ -23,6 +23,7 @@
 #include "casteljau/geom/point.h"
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace casteljau {
@@ -63,7 +64,21 @@ class EdgeList {
     /// Starts a new list for a width x height canvas (all rows).
     void reset(int width, int height) { reset({0, 0, width, height}, 0, height); }
     /// Adds the segment a -> b, clipped. Precondition: finite coordinates.
-    void add_line(Point a, Point b);
+    /// Inline for the common case, a segment inside the clip, as every
+    /// flattened vertex of a shape on the canvas adds one.
+    void add_line(Point a, Point b) {
+        if (a.y == b.y) return;
+        const float dir = a.y < b.y ? 1.0f : -1.0f;
+        if (a.y > b.y) std::swap(a, b);
+        // Outside the band: dropped, before any arithmetic that could differ.
+        if (b.y <= row_begin_ || a.y >= row_end_) return;
+        if (clip_.y0 <= a.y && b.y <= clip_.y1 && std::min(a.x, b.x) >= clip_.x0 &&
+            std::max(a.x, b.x) <= clip_.x1) {
+            push(a.x, a.y, b.x, b.y, dir); // what add_clipped's cuts would give
+            return;
+        }
+        add_clipped(a, b, dir);
+    }
 
     /// The edges added so far.
     const std::vector<Edge>& edges() const { return edges_; }
@@ -75,7 +90,12 @@ class EdgeList {
     int row_end() const { return row_end_; }
 
   private:
-    void push(double x0, double y0, double x1, double y1, float dir);
+    /// add_line's segment, a.y < b.y, crossing the clip's border.
+    void add_clipped(Point a, Point b, float dir);
+    void push(double x0, double y0, double x1, double y1, float dir) {
+        const float fy0 = float(y0), fy1 = float(y1);
+        if (fy0 < fy1) edges_.push_back({float(x0), fy0, float(x1), fy1, dir});
+    }
 
     std::vector<Edge> edges_;
     PixelRect clip_;
