@@ -96,9 +96,7 @@ TEST(Levien, AHugeArcIsPlannedInChunks) {
     EXPECT_GT(v.size(), 100u);
     EXPECT_LE(polyline_error(arc, arc.start(), v), 1.05 * 0.25);
     EXPECT_LE(double(v.size()), 1.06 * testing::optimal_segments(arc, 0.25));
-    const Vec2 d3 = (arc.p[3] - arc.p[0]) + (arc.p[1] - arc.p[2]) * 3.0;
-    EXPECT_GT(std::cbrt(d3.length() / (kQuadShare * 36 / std::sqrt(3.0) * 0.25)),
-              double(kLevienMaxQuads)); // the case is the chunked one
+    EXPECT_GT(levien_quadratics(arc, 0.25), kLevienMaxQuads); // the case is the chunked one
 }
 
 } // namespace

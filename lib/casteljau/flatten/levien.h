@@ -109,18 +109,23 @@ struct QuadPlan {
 };
 } // namespace levien_detail
 
+/// The quadratics Levien's flattener cuts `c` into at `tolerance` (top of the
+/// file): the least m with sqrt(3) / 36 |P3 - 3 P2 + 3 P1 - P0| / m^3 <=
+/// kQuadShare tol, at most kMaxUniformSegments.
+inline int levien_quadratics(const CubicBez& c, double tolerance) noexcept {
+    const Vec2 d3 = (c.p[3] - c.p[0]) + (c.p[1] - c.p[2]) * 3.0;
+    const double k = kQuadShare * 36 / std::sqrt(3.0);
+    const double m = std::ceil(std::cbrt(d3.length() / (k * tolerance)));
+    return !(m > 1) ? 1 : m >= kMaxUniformSegments ? kMaxUniformSegments : int(m);
+}
+
 /// Levien's flattener of a cubic as a range of FlatVertex (see
 /// flatten_levien for the sink form).
 class LevienFlattener : public FlatVertexLoop<LevienFlattener> {
   public:
     /// Flattens `c` to about `tolerance` > 0 (same units as the curve).
     LevienFlattener(const CubicBez& c, double tolerance) noexcept
-        : eval_(c), sqrt_tol_(std::sqrt(tolerance)) {
-        const Vec2 d3 = (c.p[3] - c.p[0]) + (c.p[1] - c.p[2]) * 3.0;
-        // sqrt(3) / 36 |d3| / m^3 <= kQuadShare tol, as m^3 >= |d3| / (k tol).
-        const double k = kQuadShare * 36 / std::sqrt(3.0);
-        const double m = std::ceil(std::cbrt(d3.length() / (k * tolerance)));
-        quads_ = !(m > 1) ? 1 : m >= kMaxUniformSegments ? kMaxUniformSegments : int(m);
+        : eval_(c), sqrt_tol_(std::sqrt(tolerance)), quads_(levien_quadratics(c, tolerance)) {
         plan_chunk();
     }
 
@@ -170,9 +175,11 @@ class LevienFlattener : public FlatVertexLoop<LevienFlattener> {
     }
 
     PowerEval<3> eval_;
-    double sqrt_tol_, h_ = 1, step_ = 0, passed_ = 0;
-    int quads_ = 1, chunk_ = 0, count_ = 0; ///< all quadratics, the chunk's first and count
-    int n_ = 1, i_ = 1, q_ = 0;             ///< the chunk's chords, the next vertex, its quadratic
+    double sqrt_tol_;
+    int quads_; ///< all the quadratics
+    double h_ = 1, step_ = 0, passed_ = 0;
+    int chunk_ = 0, count_ = 0; ///< the chunk's first quadratic and its count
+    int n_ = 1, i_ = 1, q_ = 0; ///< the chunk's chords, the next vertex, its quadratic
     std::array<levien_detail::QuadPlan, kLevienMaxQuads> plans_{};
 };
 
