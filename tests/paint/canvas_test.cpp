@@ -49,9 +49,8 @@ TYPED_TEST(CanvasFormats, LazilyClearedBandsEqualEagerClearing) {
                     s.coverage = cov.data();
                 }
                 band.composite_span(s, c);
-                Span e = s;
-                e.y = y0 + y;
-                eager.composite_span(e, c);
+                auto* d = eager.row(y0 + y) + x;
+                for (int i = 0; i < len; ++i) blend_over(d[i], c, s.at(i));
             }
             band.settle();
         }

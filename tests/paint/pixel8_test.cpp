@@ -84,8 +84,7 @@ TEST(Pixel8, CoverageZeroKeepsAndOpaqueFullCoverageReplaces) {
 }
 
 // Fast against reference: a run blended four pixels at a time carries the
-// bits of the same blend pixel by pixel (blend_over for per-pixel coverage,
-// the fixed-point blend's fixed_channel for constant coverage),
+// bits of blend_over pixel by pixel, per-pixel and constant coverage alike,
 // whatever the run's length (the four-pixel body and the one-pixel tail),
 // with coverage 0 and 1 and opaque sources among the cases.
 TEST(Pixel8, RunsBlendAsPixelByPixel) {
@@ -106,54 +105,15 @@ TEST(Pixel8, RunsBlendAsPixelByPixel) {
         for (int i = 0; i < n; ++i)
             ASSERT_EQ(got[std::size_t(i)], want[std::size_t(i)])
                 << "trial " << trial << " pixel " << i << " of " << n << " k " << k[std::size_t(i)];
-        // Constant coverage: the fixed-point blend, channel by channel.
         const float solid = k[0];
-        const detail::FixedBlend f = detail::fixed_blend(s, solid);
         want = start, got = start;
-        for (int i = 0; i < n; ++i) {
-            Premul8& w = want[std::size_t(i)];
-            w = {detail::fixed_channel(w.r, f.add[0], f.keep),
-                 detail::fixed_channel(w.g, f.add[1], f.keep),
-                 detail::fixed_channel(w.b, f.add[2], f.keep),
-                 detail::fixed_channel(w.a, f.add[3], f.keep)};
-        }
+        for (int i = 0; i < n; ++i) blend_over(want[std::size_t(i)], s, solid);
         blend_span_over(got.data(), n, s, solid);
         for (int i = 0; i < n; ++i)
             ASSERT_EQ(got[std::size_t(i)], want[std::size_t(i)])
                 << "trial " << trial << " pixel " << i << " of " << n << " solid " << solid;
         EXPECT_EQ(got[std::size_t(n)], start[std::size_t(n)]) << "wrote past the run";
     }
-}
-
-// A run of one coverage is blended in 8.8 fixed point (pixel8.h): within
-// 0.5 + 1/128 of a step of the float formula, unbiased, coverage 0 keeps the
-// bytes, and an opaque source at full coverage is within that of round(255 S).
-TEST(Pixel8, ConstantRunsAreTheFloatBlendWithinAStepAndAHalf128th) {
-    testing::Rng rng(85);
-    double signed_sum = 0;
-    long n = 0;
-    for (int trial = 0; trial < 20000; ++trial) {
-        const Premul8 start = quantize(random_premul(rng));
-        Premul s = random_premul(rng);
-        const double pick = rng.uniform(0, 1);
-        const float k = pick < 0.1 ? 0.0f : pick < 0.3 ? 1.0f : float(rng.uniform(0, 1));
-        if (rng.uniform(0, 1) < 0.2) s = premultiply({s.r, s.g, s.b, 1.0f});
-        Premul exact = to_premul(start);
-        blend_over(exact, s, k);
-        Premul8 d = start;
-        blend_span_over(&d, 1, s, k);
-        if (k == 0.0f) {
-            ASSERT_EQ(d, start) << "trial " << trial;
-        }
-        for (int i = 0; i < 4; ++i) {
-            const float err = channel(d, i) - 255.0f * channel(exact, i);
-            ASSERT_LE(std::fabs(err), 0.5f + 1.0f / 128.0f)
-                << "trial " << trial << " channel " << i << " k " << k << " start "
-                << channel(start, i) << " source " << channel(s, i);
-            signed_sum += err, ++n;
-        }
-    }
-    EXPECT_LT(std::fabs(signed_sum / double(n)), 0.02) << "rounding is biased";
 }
 
 } // namespace

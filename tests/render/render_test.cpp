@@ -210,11 +210,10 @@ TYPED_TEST(RenderFormats, BandsAreBitIdenticalToOneThread) {
 }
 
 // A render onto a Canvas8 is the float render rounded composite by
-// composite: each rounds once, to within half a step (paint/pixel8.h; a run
-// of one coverage, in fixed point, within 0.5 + 1/128), and a step's error
-// is carried on scaled by at most 1, so a pixel is within that per composite
-// reaching it (a fill, a stroke, a group's layer) of 255 times the float
-// pixel. Rounding to nearest is also unbiased: the mean
+// composite: each rounds once, to within half a step (paint/pixel8.h), and a
+// step's error is carried on scaled by at most 1, so a pixel is within half
+// a step per composite reaching it (a fill, a stroke, a group's layer) of
+// 255 times the float pixel. Rounding to nearest is also unbiased: the mean
 // signed error over the covered pixels is near 0 (truncating would pull it
 // towards -1/2 a composite).
 TEST(Render, Canvas8IsTheFloatRenderRoundedPerComposite) {
@@ -267,7 +266,7 @@ TEST(Render, Canvas8IsTheFloatRenderRoundedPerComposite) {
             const float errors[4] = {got.r - 255 * want.r, got.g - 255 * want.g,
                                      got.b - 255 * want.b, got.a - 255 * want.a};
             for (float e : errors) {
-                ASSERT_LE(std::fabs(e), (0.5 + 1.0 / 128) * composites + 1e-3)
+                ASSERT_LE(std::fabs(e), 0.5 * composites + 1e-3)
                     << "at " << x << "," << y << " after " << composites << " composites";
                 if (composites > 0) signed_sum += e, ++covered;
             }

@@ -14,36 +14,17 @@
 // Pixels are 4 bytes against the float canvas's 16: a quarter of the memory
 // traffic per composited pixel, which is what large covered areas and
 // several threads are limited by (bench/README.md).
-//
-// A run of one coverage (the inside of a translucent fill, most of what such
-// fills blend) is blended in 8.8 fixed point instead, with 16-bit integers
-// and no conversion to float (blend_fixed_run), the way Skia's and Blend2D's
-// 8-bit pipelines blend:
-//   D' = floor((add + floor(256 D keep / 65536)) / 256),
-//   add = round(65280 k S) + 128,  keep = min(65535, round(65536 (1 - k S.a))),
-// that is 255 k S + (1 - k S.a) D plus a half, in 1/256 steps, floored. Each
-// term is off by at most 1/256 of a step (add's rounding 1/512, keep's 255 *
-// 2^-17, the inner floor 1/256), so a composite is within 0.5 + 1/128 of a
-// step of the float formula, where the float blend is within 0.5; coverage 0
-// keeps the bytes (keep = 65535 takes exactly one 256th from 256 D > 0,
-// which add's half restores). Why: the float blend converts every channel
-// to float and back, and those conversions, not the multiplies, bound it (an
-// eight-pixel AVX2 form of it measured within noise of the four-pixel one);
-// with 16-bit lanes the 2k translucent blobs' frame takes 2.5% less
-// (bench/README.md, issue 25, eleventh session). Runs of per-pixel coverage
-// keep the float blend: their per-pixel factors in fixed point took as many
-// instructions as the float form.
 #pragma once
 
 #include "casteljau/paint/color.h"
 
-#include <algorithm>
 #include <bit>
 #include <cstdint>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #else
+#include <algorithm>
 #include <cmath>
 #endif
 
@@ -120,17 +101,39 @@ __m128i blend_lane(__m128 src, __m128 k255, __m128 inv, __m128i lanes) {
 #endif
 
 namespace detail {
-// blend_over of `s` onto d[0, n), pixel i through coverage k[i]: the same
-// bits as the loop of blend_over, four pixels at a time (one 16-byte load and
-// store, the coverage-dependent factors computed for four at once).
-inline void blend_run(Premul8* d, int n, const Premul& s, const float* k) {
+/// Coverage per pixel, as blend_run reads it: one pixel or four at a time.
+struct PerPixel {
+    const float* k; ///< the run's coverage values
+    /// Pixel i's coverage.
+    float at(int i) const { return k[i]; }
+#if defined(__SSE2__)
+    /// Pixels i to i + 3's coverage.
+    __m128 four(int i) const { return _mm_loadu_ps(k + i); }
+#endif
+};
+/// One coverage for the whole run, as blend_run reads it.
+struct Constant {
+    float k; ///< every pixel's coverage
+    /// Pixel i's coverage.
+    float at(int) const { return k; }
+#if defined(__SSE2__)
+    /// Pixels i to i + 3's coverage.
+    __m128 four(int) const { return _mm_set1_ps(k); }
+#endif
+};
+
+// blend_over of `s` onto d[0, n) through `coverage`: the same bits as the
+// loop of blend_over, four pixels at a time (one 16-byte load and store, the
+// coverage-dependent factors computed for four at once).
+template <class Coverage>
+void blend_run(Premul8* d, int n, const Premul& s, Coverage coverage) {
     int i = 0;
 #if defined(__SSE2__)
     const __m128i zero = _mm_setzero_si128();
     const __m128 src = _mm_setr_ps(s.r, s.g, s.b, s.a), alpha = _mm_set1_ps(s.a);
     const __m128 one = _mm_set1_ps(1.0f), scale = _mm_set1_ps(255.0f);
     for (; i + 4 <= n; i += 4) {
-        const __m128 kk = _mm_loadu_ps(k + i);
+        const __m128 kk = coverage.four(i);
         const __m128 k255 = _mm_mul_ps(kk, scale);
         const __m128 inv = _mm_sub_ps(one, _mm_mul_ps(kk, alpha));
         const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(d + i));
@@ -143,66 +146,7 @@ inline void blend_run(Premul8* d, int n, const Premul& s, const float* k) {
         _mm_storeu_si128(reinterpret_cast<__m128i*>(d + i), packed);
     }
 #endif
-    for (; i < n; ++i) blend_over(d[i], s, k[i]);
-}
-
-/// A run's blend in 8.8 fixed point (top of the file): per channel.
-struct FixedBlend {
-    std::uint16_t add[4]; ///< round(65280 k S) + 128, R G B A
-    std::uint16_t keep;   ///< min(65535, round(65536 (1 - k S.a)))
-};
-
-inline FixedBlend fixed_blend(const Premul& s, float k) {
-    // Clamped: a color out of [0, 1] (which premultiply never makes) must not
-    // wrap around the 16 bits.
-    const auto add = [k](float c) {
-        return std::uint16_t(int(std::clamp(65280.0f * k * c, 0.0f, 65280.0f) + 0.5f) + 128);
-    };
-    const float kept = std::clamp(1.0f - k * s.a, 0.0f, 1.0f);
-    return {{add(s.r), add(s.g), add(s.b), add(s.a)},
-            std::uint16_t(std::min(65535, int(kept * 65536.0f + 0.5f)))};
-}
-
-/// One channel: what one 16-bit lane of blend_fixed_run computes (a high
-/// multiply, a saturating add, a shift); the reference its tests compare with.
-inline std::uint8_t fixed_channel(std::uint8_t d, std::uint16_t add, std::uint16_t keep) {
-    const unsigned kept = (unsigned(d) << 8) * keep >> 16;
-    return std::uint8_t(std::min(65535u, kept + add) >> 8);
-}
-
-/// blend_over of `s` onto d[0, n) through one coverage k, in 8.8 fixed point
-/// (top of the file): fixed_channel on every channel, four pixels at a time.
-inline void blend_fixed_run(Premul8* d, int n, const Premul& s, float k) {
-    const FixedBlend f = fixed_blend(s, k);
-#if defined(__SSE2__)
-    // Two pixels' channels a register, as 16-bit lanes; the byte loaded into
-    // each lane's high half is 256 D.
-    const __m128i add =
-        _mm_setr_epi16(short(f.add[0]), short(f.add[1]), short(f.add[2]), short(f.add[3]),
-                       short(f.add[0]), short(f.add[1]), short(f.add[2]), short(f.add[3]));
-    const __m128i keep = _mm_set1_epi16(short(f.keep)), zero = _mm_setzero_si128();
-    const auto four = [&](Premul8* p) {
-        const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(p));
-        const __m128i lo = _mm_unpacklo_epi8(zero, bytes), hi = _mm_unpackhi_epi8(zero, bytes);
-        const __m128i blo = _mm_srli_epi16(_mm_adds_epu16(_mm_mulhi_epu16(lo, keep), add), 8);
-        const __m128i bhi = _mm_srli_epi16(_mm_adds_epu16(_mm_mulhi_epu16(hi, keep), add), 8);
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(p), _mm_packus_epi16(blo, bhi));
-    };
-    int i = 0;
-    for (; i + 4 <= n; i += 4) four(d + i);
-    // The last one to three pixels through a copy, the same lanes: a scalar
-    // tail cost a fifth of a 40-pixel run (the 2k blobs' fills).
-    if (i < n) {
-        Premul8 rest[4] = {};
-        std::copy(d + i, d + n, rest);
-        four(rest);
-        std::copy(rest, rest + (n - i), d + i);
-    }
-#else
-    for (int i = 0; i < n; ++i)
-        d[i] = {fixed_channel(d[i].r, f.add[0], f.keep), fixed_channel(d[i].g, f.add[1], f.keep),
-                fixed_channel(d[i].b, f.add[2], f.keep), fixed_channel(d[i].a, f.add[3], f.keep)};
-#endif
+    for (; i < n; ++i) blend_over(d[i], s, coverage.at(i));
 }
 } // namespace detail
 
@@ -210,14 +154,12 @@ inline void blend_fixed_run(Premul8* d, int n, const Premul& s, float k) {
 /// source needs no run-by-run test for full coverage: k = 1 gives inv = 0
 /// and round(255 S + 0 D) = quantize(S), the store's bits.
 inline void blend_span_over(Premul8* d, int n, const Premul& s, const float* k) {
-    detail::blend_run(d, n, s, k);
+    detail::blend_run(d, n, s, detail::PerPixel{k});
 }
 
-/// Source-over of `s` onto d[0, n), every pixel through coverage k, in 8.8
-/// fixed point: within 0.5 + 1/128 of a step of blend_over's float formula
-/// (top of the file).
+/// blend_over of `s` onto d[0, n), every pixel through coverage k.
 inline void blend_span_over(Premul8* d, int n, const Premul& s, float k) {
-    detail::blend_fixed_run(d, n, s, k);
+    detail::blend_run(d, n, s, detail::Constant{k});
 }
 
 } // namespace casteljau
