@@ -5,6 +5,11 @@
 // both canvases: float (Canvas, 16 bytes a pixel) and 8-bit (Canvas8, 4).
 // Thread scaling, 1 to 2 threads, on the dense scene and on each scene of
 // cairo_compare_bench, next to what the machine gives the same work.
+// BM_Frame: one-thread frames of each scene of cairo_compare_bench and of
+// each SVG argument, without Cairo's frames in between: the loop for A/B runs
+// of two builds (run the two binaries alternately on one core).
+//
+// Usage: render_bench [benchmark flags] [SCENE.svg ...]
 #include "bench_scenes.h"
 #include "casteljau/curve/path_data.h"
 #include "casteljau/raster/path_edges.h"
@@ -13,11 +18,15 @@
 #include "casteljau/render/worker_pool.h"
 #include "casteljau/svg/reader.h"
 
+#include <algorithm>
 #include <atomic>
 #include <benchmark/benchmark.h>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace casteljau {
@@ -33,20 +42,22 @@ Scene load(const std::string& path) {
 }
 
 template <class Canvas>
-void render_frames(benchmark::State& state, const Scene& scene, bool antialias) {
+void render_frames(benchmark::State& state, const Scene& scene, bool antialias,
+                   double scale = 1.0) {
     BandRenderer renderer;
     Canvas canvas;
     RenderOptions options;
     options.antialias = antialias;
     std::size_t segments = 0;
     // The renderer clears every pixel to the background itself.
-    canvas.reset(int(scene.width), int(scene.height));
+    const int w = int(std::ceil(scene.width * scale)), h = int(std::ceil(scene.height * scale));
+    canvas.reset(w, h);
     for (auto _ : state) {
-        segments =
-            renderer.render(scene, Affine::identity(), canvas, options, {}, 1).flatten.segments_out;
+        segments = renderer.render(scene, Affine::scale(scale), canvas, options, {}, 1)
+                       .flatten.segments_out;
         benchmark::DoNotOptimize(canvas.row(0));
     }
-    const double px = scene.width * scene.height;
+    const double px = double(w) * h;
     state.counters["Mpixels_per_s"] =
         benchmark::Counter(px * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
     state.counters["segments"] = double(segments);
@@ -250,7 +261,36 @@ BENCHMARK(BM_SmallShapeRaster)
     ->ArgName("frame")
     ->Unit(benchmark::kMicrosecond);
 
+// Frames of one scene on both canvases: BM_Frame/<name>/float, .../u8.
+void register_frames(const std::string& name, std::shared_ptr<const Scene> scene, double scale) {
+    benchmark::RegisterBenchmark(("BM_Frame/" + name + "/float").c_str(),
+                                 [scene, scale](benchmark::State& state) {
+                                     render_frames<Canvas>(state, *scene, true, scale);
+                                 })
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("BM_Frame/" + name + "/u8").c_str(),
+                                 [scene, scale](benchmark::State& state) {
+                                     render_frames<Canvas8>(state, *scene, true, scale);
+                                 })
+        ->Unit(benchmark::kMillisecond);
+}
+
 } // namespace
 } // namespace casteljau
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+    using namespace casteljau;
+    benchmark::Initialize(&argc, argv);
+    for (bench::NamedScene& s : bench::standard_scenes())
+        register_frames(s.name, std::make_shared<const Scene>(std::move(s.scene)), 1.0);
+    // Each SVG argument scaled so that its longer side is 1024 px, as in
+    // cairo_compare_bench (the tiger at 1024 px).
+    for (int i = 1; i < argc; ++i) {
+        Scene scene = load(argv[i]);
+        const double scale = bench::kSceneSize / std::max(scene.width, scene.height);
+        register_frames(argv[i], std::make_shared<const Scene>(std::move(scene)), scale);
+    }
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}
