@@ -1,11 +1,15 @@
 #include "casteljau/io/canvas_write.h"
 #include "casteljau/io/image_write.h"
+#include "casteljau/paint/straight_rgba.h"
 
 #include <OpenImageIO/imageio.h>
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
 #include <iterator>
+#include <utility>
 #include <vector>
 
 namespace casteljau {
@@ -93,6 +97,50 @@ TEST(ImageWrite, ACanvas8WritesAsTheFloatCanvasOfItsValues) {
         const std::string cb{std::istreambuf_iterator<char>(fb), {}};
         EXPECT_FALSE(ca.empty()) << ext;
         EXPECT_EQ(ca, cb) << ext;
+    }
+}
+
+// A premultiplied view (floats, and bytes) is written as each pixel's
+// straight color in bytes: channel_to_u8 of straight_of, the scalar formula,
+// byte for byte, read back by OIIO's PNG reader (the writer is our libpng
+// one); faint, transparent and over-range pixels included.
+TEST(ImageWrite, PremultipliedViewsWriteTheStraightBytesOfEachPixel) {
+    TempDir dir;
+    const int w = 61, h = 5;
+    std::vector<float> floats(std::size_t(w * h * 4));
+    std::vector<std::uint8_t> bytes(floats.size());
+    for (std::size_t i = 0; i < floats.size(); i += 4) {
+        const float a = i % 29 == 0 ? 0.0f : float((i * 7919) % 1000) / 999.0f;
+        for (std::size_t c = 0; c < 3; ++c)
+            floats[i + c] = a * float((i * 31 + c * 17) % 1000) / 999.0f * (c == 2 ? 1.2f : 1.0f);
+        floats[i + 3] = a;
+        for (std::size_t c = 0; c < 4; ++c) bytes[i + c] = std::uint8_t((i * 13 + c * 71) % 256);
+        bytes[i + 3] = std::max({bytes[i], bytes[i + 1], bytes[i + 2], bytes[i + 3]});
+    }
+    ImageView from_floats{w, h, floats, Alpha::premultiplied};
+    ImageView from_bytes{w, h, {}, Alpha::premultiplied};
+    from_bytes.rgba8 = bytes;
+    for (const auto& [name, view] : {std::pair{"floats", from_floats}, {"bytes", from_bytes}}) {
+        const std::string path = (dir.path / (std::string(name) + ".png")).string();
+        ASSERT_EQ(write_image_atomic(path, view), "") << name;
+        OIIO::ImageSpec config; // the file's own bytes, not premultiplied on reading
+        config["oiio:UnassociatedAlpha"] = 1;
+        auto in = OIIO::ImageInput::open(path, &config);
+        ASSERT_TRUE(in) << name;
+        ASSERT_EQ(in->spec().nchannels, 4) << name;
+        std::vector<std::uint8_t> back(floats.size());
+        ASSERT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, back.data()));
+        for (std::size_t i = 0; i < back.size(); i += 4) {
+            const auto v = [&](std::size_t c) {
+                return view.rgba.empty() ? float(bytes[i + c]) / 255.0f : floats[i + c];
+            };
+            const Rgba s = straight_of({v(0), v(1), v(2), v(3)});
+            const std::uint8_t want[4] = {channel_to_u8(s.r), channel_to_u8(s.g),
+                                          channel_to_u8(s.b), channel_to_u8(s.a)};
+            for (std::size_t c = 0; c < 4; ++c)
+                ASSERT_EQ(int(back[i + c]), int(want[c]))
+                    << name << " pixel " << i / 4 << " channel " << c;
+        }
     }
 }
 

@@ -39,16 +39,6 @@ std::vector<float> premultiplied(std::span<const float> rgba) {
     return out;
 }
 
-/// One byte of PNG's straight values: rounded as channel_to_u8 does (as OIIO
-/// did when it wrote PNG); premultiplied values divided by alpha in float
-/// first (OIIO divided the rounded bytes, losing faint colors).
-void straight_bytes(const float* v, Alpha alpha, std::uint8_t* out) {
-    Rgba c{v[0], v[1], v[2], v[3]};
-    if (alpha == Alpha::premultiplied) c = straight_of({v[0], v[1], v[2], v[3]});
-    out[0] = channel_to_u8(c.r), out[1] = channel_to_u8(c.g);
-    out[2] = channel_to_u8(c.b), out[3] = channel_to_u8(c.a);
-}
-
 /// PNG by the library's own encoder.
 std::string write_png(const std::string& path, const ImageView& image) {
     const bool bytes_in = image.rgba.empty();
@@ -59,20 +49,26 @@ std::string write_png(const std::string& path, const ImageView& image) {
                std::to_string(image.height) + " image from " + std::to_string(values) + " values";
     try {
         PngRows rows(image.width, image.height);
+        std::vector<Premul> row(std::size_t(image.width)); // a premultiplied row, as floats
         for (int y = 0; y < image.height; ++y) {
             std::uint8_t* out = rows.rgba(y);
             const std::size_t at = std::size_t(y) * n;
-            if (bytes_in && image.alpha == Alpha::straight) {
-                std::copy_n(image.rgba8.data() + at, n, out);
+            const auto value = [&](std::size_t i) {
+                return bytes_in ? float(image.rgba8[at + i]) / 255.0f : image.rgba[at + i];
+            };
+            if (image.alpha == Alpha::straight) {
+                if (bytes_in)
+                    std::copy_n(image.rgba8.data() + at, n, out);
+                else
+                    for (std::size_t i = 0; i < n; ++i) out[i] = channel_to_u8(value(i));
                 continue;
             }
-            for (std::size_t i = 0; i < n; i += 4) {
-                float v[4];
-                for (std::size_t c = 0; c < 4; ++c)
-                    v[c] =
-                        bytes_in ? float(image.rgba8[at + i + c]) / 255.0f : image.rgba[at + i + c];
-                straight_bytes(v, image.alpha, out + i);
-            }
+            // Premultiplied: divided by alpha in float first, as a canvas's
+            // rows are (straight_rgba.h), not as OIIO did (dividing the
+            // rounded bytes, which lost faint colors).
+            for (std::size_t x = 0; x < row.size(); ++x)
+                row[x] = {value(4 * x), value(4 * x + 1), value(4 * x + 2), value(4 * x + 3)};
+            straight_row8(row.data(), image.width, out);
         }
         return write_png_atomic(path, std::move(rows));
     } catch (const std::bad_alloc&) {
