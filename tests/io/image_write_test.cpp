@@ -129,10 +129,11 @@ TEST(ImageWrite, PremultipliedViewsWriteTheStraightBytesOfEachPixel) {
         ASSERT_TRUE(in) << name;
         ASSERT_EQ(in->spec().nchannels, 4) << name;
         std::vector<std::uint8_t> back(floats.size());
+        const bool in_bytes = view.rgba.empty(); // a structured binding clang 14 cannot capture
         ASSERT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, back.data()));
         for (std::size_t i = 0; i < back.size(); i += 4) {
-            const auto v = [&](std::size_t c) {
-                return view.rgba.empty() ? float(bytes[i + c]) / 255.0f : floats[i + c];
+            const auto v = [&, in_bytes](std::size_t c) {
+                return in_bytes ? float(bytes[i + c]) / 255.0f : floats[i + c];
             };
             const Rgba s = straight_of({v(0), v(1), v(2), v(3)});
             const std::uint8_t want[4] = {channel_to_u8(s.r), channel_to_u8(s.g),
