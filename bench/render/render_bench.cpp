@@ -261,18 +261,19 @@ BENCHMARK(BM_SmallShapeRaster)
     ->ArgName("frame")
     ->Unit(benchmark::kMicrosecond);
 
+// One-thread frames of `scene` on one canvas, as the benchmark `label`.
+template <class Canvas>
+void register_frame(const std::string& label, std::shared_ptr<const Scene> scene, double scale) {
+    benchmark::RegisterBenchmark(label.c_str(), [scene, scale](benchmark::State& state) {
+        render_frames<Canvas>(state, *scene, true, scale);
+    })->Unit(benchmark::kMillisecond);
+}
+
 // Frames of one scene on both canvases: BM_Frame/<name>/float, .../u8.
-void register_frames(const std::string& name, std::shared_ptr<const Scene> scene, double scale) {
-    benchmark::RegisterBenchmark(("BM_Frame/" + name + "/float").c_str(),
-                                 [scene, scale](benchmark::State& state) {
-                                     render_frames<Canvas>(state, *scene, true, scale);
-                                 })
-        ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("BM_Frame/" + name + "/u8").c_str(),
-                                 [scene, scale](benchmark::State& state) {
-                                     render_frames<Canvas8>(state, *scene, true, scale);
-                                 })
-        ->Unit(benchmark::kMillisecond);
+void register_frames(const std::string& name, const std::shared_ptr<const Scene>& scene,
+                     double scale) {
+    register_frame<Canvas>("BM_Frame/" + name + "/float", scene, scale);
+    register_frame<Canvas8>("BM_Frame/" + name + "/u8", scene, scale);
 }
 
 } // namespace
