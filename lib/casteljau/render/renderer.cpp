@@ -376,9 +376,11 @@ bool Renderer::prepare_pattern(const Pattern& p, const Affine& m, float opacity)
         const double sx = std::hypot(to_device.a, to_device.b) * p.width;
         const double sy = std::hypot(to_device.c, to_device.d) * p.height;
         if (!(sx > 0 && sy > 0) || !std::isfinite(sx * sy)) return false;
+        // Clamped as doubles: a tile far longer than wide keeps sx * sy
+        // finite, yet one side times the shrink can be past int's range.
         const double shrink = std::min(1.0, std::sqrt(double(kMaxTilePixels) / (sx * sy)));
-        const int w = std::clamp(int(std::ceil(sx * shrink)), 1, int(kMaxTilePixels));
-        const int h = std::clamp(int(std::ceil(sy * shrink)), 1, int(kMaxTilePixels / w));
+        const int w = int(std::clamp(std::ceil(sx * shrink), 1.0, double(kMaxTilePixels)));
+        const int h = int(std::clamp(std::ceil(sy * shrink), 1.0, double(kMaxTilePixels / w)));
         if (!tile_renderer_) tile_renderer_ = std::make_unique<Renderer>();
         tile_canvas_.reset(w, h);
         tile_renderer_->begin(Affine::scale(w / p.width, h / p.height), *options_, {0, 0, w, h});
