@@ -256,6 +256,21 @@ TEST(Pattern, ATinyTileIsItsMeanColor) {
     EXPECT_NEAR(c.row(50)[50].a, 0.25f, 1e-3f);
 }
 
+TEST(Pattern, ATile1e36WideAnd1e30HighPaintsAsItsColor) {
+    // Regression (fuzz input tests/fuzz/pending/svg_render/
+    // pattern-tile-7.9e34-px-long.svg): the tile's area is finite, but its
+    // long side in device pixels was converted to int before the clamp to
+    // kMaxTilePixels, undefined behaviour that the sanitizer pass (which
+    // aborts on it) catches. Clamped, the tile is 2^20 x 1 pixels, wholly
+    // covered, so it paints its color.
+    const Canvas c =
+        render(R"svg(<pattern id="p" patternUnits="userSpaceOnUse" width="1e36" height="1e-30">
+          <rect width="1e36" height="1e-30" fill="#000"/></pattern>
+        <rect width="100" height="100" fill="url(#p)"/>)svg");
+    EXPECT_NEAR(c.row(50)[50].a, 1.0f, 1e-3f);
+    EXPECT_NEAR(c.row(99)[0].a, 1.0f, 1e-3f);
+}
+
 TEST(BlendMode, IsolationKeepsTheBackdropOut) {
     // difference of blue over red inside an isolated group ignores the green
     // under the group; without isolation it blends with it where the red
