@@ -1,18 +1,24 @@
 // Steady state allocates nothing: a second frame of the same scene reuses
 // every buffer of the first (the speed issue's "no allocation per path or
-// edge"). Global operator new is replaced in this file to count; the count is
-// read only around the frames measured here.
+// edge"); and hostile input allocates within its limits. Global operator new
+// is replaced in this file to count allocations and keep the largest; both
+// are read only around the calls measured here.
 #include "casteljau/render/bands.h"
 #include "casteljau/render/worker_pool.h"
+#include "casteljau/stroke/stroker.h"
 #include "casteljau/svg/reader.h"
 
 #include <atomic>
 #include <cstdlib>
 #include <gtest/gtest.h>
+#include <malloc.h>
 #include <new>
 
 namespace {
 std::atomic<long> g_allocations{0};
+// Bytes held through operator new (as malloc sized the blocks), and the most
+// held at once since the test that reads it reset it.
+std::atomic<std::size_t> g_held{0}, g_peak_held{0};
 } // namespace
 
 // GCC flags free() in a replaced operator delete as a mismatch with new: in a
@@ -21,11 +27,18 @@ std::atomic<long> g_allocations{0};
 #pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 void* operator new(std::size_t n) {
     ++g_allocations;
-    if (void* p = std::malloc(n ? n : 1)) return p;
-    throw std::bad_alloc();
+    void* p = std::malloc(n ? n : 1);
+    if (!p) throw std::bad_alloc();
+    const std::size_t held = g_held += malloc_usable_size(p);
+    for (std::size_t m = g_peak_held; held > m && !g_peak_held.compare_exchange_weak(m, held);) {
+    }
+    return p;
 }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p) noexcept {
+    g_held -= malloc_usable_size(p);
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept { operator delete(p); }
 #pragma GCC diagnostic pop
 
 namespace casteljau {
@@ -68,6 +81,34 @@ TEST(SteadyState, AWorkerPoolRunAllocatesNothing) {
     for (int n : {3, 1, 2, 3}) pool.run(n, job);
     EXPECT_EQ(g_allocations - before, 0);
     EXPECT_EQ(calls, 12);
+}
+
+// The pattern tile of tests/fuzz/regressions/svg_render/pattern-tile-7.9e34-px-long.svg
+// strokes a circle 1e61 px tall at the device's 0.25 px, which the outline's
+// point limit (2^23 a call) drops; but the limit was checked only after each
+// segment, whose samples could grow past it first (with libFuzzer's
+// bookkeeping, over its 1 GiB). The samples now stop where they could not
+// fit. Here, a circle of radius 3 at a tolerance of 2.5e-61: 2^21 vertices
+// a quarter.
+TEST(Memory, AStrokePastThePointLimitStopsSamplingWhereItCannotFit) {
+    Path circle;
+    circle.move_to({3, 0});
+    const double w = std::sqrt(0.5);
+    circle.conic_to({3, 3}, {0, 3}, w);
+    circle.conic_to({-3, 3}, {-3, 0}, w);
+    circle.conic_to({-3, -3}, {0, -3}, w);
+    circle.conic_to({3, -3}, {3, 0}, w);
+    circle.close();
+    StrokeGeometry thin;
+    thin.width = 1;
+    Stroker stroker;
+    g_peak_held = g_held.load();
+    const std::size_t before = g_held;
+    const auto polys = stroker.outline(circle, thin, 2.5e-61, Rect{-4, -4, 4, 4});
+    EXPECT_TRUE(polys.empty()) << polys.size() << " polygons";
+    // 386 MB measured (721 MB before): two segments' samples at 40 bytes,
+    // the last one's cut at 2^22, and a quarter's 2^21 vertices.
+    EXPECT_LE(g_peak_held - before, std::size_t(1) << 29) << g_peak_held - before << " bytes";
 }
 
 } // namespace

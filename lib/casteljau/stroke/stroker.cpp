@@ -175,40 +175,52 @@ class Sampler {
     // and last samples'), with handles shorter than kUnresolved tolerances
     // collapsed: (a) is then held to that much less, so that the samples stay
     // within tol of the offsets of a curve within tol / 64 of the given one.
-    void run(const Segment& s, std::vector<Sample>& out) {
+    // False, with `out` unfinished, when they would be more than `limit`:
+    // the caller drops the subpath, and the buffers never outgrow what it
+    // would accept (a flattening alone can be 2^24 vertices).
+    bool run(const Segment& s, std::vector<Sample>& out, std::size_t limit) {
         Segment collapsed;
         const double eps = kUnresolved * tol_;
         const bool moved = collapse_short_handles(s, eps, collapsed);
         const Segment& seg = moved ? collapsed : s;
-        std::visit([&](const auto& c) { run(seg, c, base_tol_ - (moved ? eps : 0.0), out); }, seg);
+        return std::visit(
+            [&](const auto& c) { return run(seg, c, base_tol_ - (moved ? eps : 0.0), out, limit); },
+            seg);
     }
 
   private:
     template <class Curve>
-    void run(const Segment& s, const Curve& c, double base_tol, std::vector<Sample>& out) {
+    bool run(const Segment& s, const Curve& c, double base_tol, std::vector<Sample>& out,
+             std::size_t limit) {
         Vec2 d = tangent(s, c, 0.0);
         out.push_back({c.start(), d});
         // (a): the guided flattener's vertices at the base tolerance (cheaper
         // per sample than adaptive's exact chords; measured faster on thin
         // strokes in bench/render/cairo_compare_bench, where (a) dominates).
+        // Each vertex is a sample: past `limit` the rest are not kept.
         vertices_.clear();
         flatten_curve(c, FlattenOptions{base_tol, FlattenMethod::Guided, 0},
-                      [&](const FlatVertex& v) { vertices_.push_back(v); });
+                      [&](const FlatVertex& v) {
+                          if (vertices_.size() < limit) vertices_.push_back(v);
+                      });
+        if (vertices_.size() >= limit) return false;
         FlatVertex a{c.start(), 0.0};
         const Interior<Curve> interior(c);
         for (const FlatVertex& b : vertices_) {
-            refine(s, c, interior, a, b, d, out);
+            if (!refine(s, c, interior, a, b, d, out, limit)) return false;
             a = b;
         }
+        return true;
     }
 
     // (b) between the curve points a and b, by bisection to depth 16; `d` is
     // the unit tangent at a on entry, at b on return. The left half is worked
     // on at once and only right halves wait on the stack (one per depth), so
-    // the usual span, which needs no cut, touches no stack.
+    // the usual span, which needs no cut, touches no stack. False when `out`
+    // reaches `limit` samples first.
     template <class Curve>
-    void refine(const Segment& s, const Curve& c, const Interior<Curve>& interior, FlatVertex a,
-                FlatVertex b, Vec2& d, std::vector<Sample>& out) {
+    bool refine(const Segment& s, const Curve& c, const Interior<Curve>& interior, FlatVertex a,
+                FlatVertex b, Vec2& d, std::vector<Sample>& out, std::size_t limit) {
         struct Span {
             FlatVertex a, b;
             int depth;
@@ -229,9 +241,10 @@ class Sampler {
                 sp = {sp.a, mid, sp.depth + 1};
                 continue;
             }
+            if (out.size() >= limit) return false;
             out.push_back({sp.b.p, db, turns});
             d = db;
-            if (right_halves.empty()) return;
+            if (right_halves.empty()) return true;
             sp = right_halves.pop();
         }
     }
@@ -325,6 +338,16 @@ struct Stroker::Buffers {
         polygons[count].clear();
         return count++;
     }
+
+    // Frees the working buffers and the polygons past the outline's, once a
+    // subpath outgrew the point limit: kept, the hundreds of megabytes it
+    // took would stay with the renderer for every stroke after it (a batch's
+    // next files, a fuzzer's next inputs).
+    void release_after_limit() {
+        vertices = {}, samples = {}, before = {}, head = {}, right = {};
+        polygons.resize(count);
+        polygons.shrink_to_fit();
+    }
 };
 
 namespace {
@@ -396,7 +419,8 @@ class Outline {
 
     // Outlines a subpath, unless it takes more than `budget` points: then
     // it is dropped (a part of it would be a wrong shape) and false returned.
-    // Counted per segment: one adds at most its samples and a few joins.
+    // Counted per segment: one adds its samples, which are not made past
+    // what could fit, and a few joins.
     bool subpath(Point start, std::span<const Segment> segments, bool closed, std::size_t budget) {
         std::vector<const Segment*>& segs = b_.segs;
         segs.clear();
@@ -413,6 +437,10 @@ class Outline {
         std::vector<Point>& left = b_.polygons[left_at];
         std::vector<Point>& right = closed ? b_.polygons[right_at] : b_.right;
         right.clear();
+        const auto drop = [&] {
+            b_.count = left_at;
+            return false;
+        };
         std::vector<Sample>& samples = b_.samples;
         std::vector<Sample>& before = b_.before;
         std::vector<Sample>& head = b_.head;
@@ -426,7 +454,10 @@ class Outline {
         for (std::size_t i = 0; i < segs.size(); ++i) {
             samples.swap(before);
             samples.clear();
-            sampler_.run(*segs[i], samples);
+            // Each sample adds a point to either side: more than half the
+            // budget left cannot fit.
+            if (!sampler_.run(*segs[i], samples, (budget - left.size() - right.size()) / 2))
+                return drop();
             bool inner[2] = {false, false};
             if (i == 0) first_d = samples[0].d;
             for (int s = 0; s < 2 && i > 0; ++s)
@@ -454,10 +485,7 @@ class Outline {
             }
             last_d = samples.back().d;
             last_p = samples.back().p;
-            if (left.size() + right.size() > budget) {
-                b_.count = left_at;
-                return false;
-            }
+            if (left.size() + right.size() > budget) return drop();
         }
         if (closed) {
             const Neighbours around{samples, head, h_ + tol_};
@@ -716,9 +744,12 @@ std::span<const Polygon> Stroker::outline(const Path& path, const StrokeGeometry
     for (const Pieces::Run& run : b.pieces.runs) {
         if (run.begin == run.end) continue; // a lone move_to draws nothing
         const std::size_t before = b.count;
-        if (points >= kMaxOutlinePoints || !outline.subpath(run.start, b.pieces.segments_of(run),
-                                                            run.closed, kMaxOutlinePoints - points))
+        if (points >= kMaxOutlinePoints ||
+            !outline.subpath(run.start, b.pieces.segments_of(run), run.closed,
+                             kMaxOutlinePoints - points)) {
+            b.release_after_limit();
             break;
+        }
         for (std::size_t i = before; i < b.count; ++i) points += b.polygons[i].size();
     }
     return {b.polygons.data(), b.count};

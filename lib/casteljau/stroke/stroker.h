@@ -87,7 +87,9 @@
 // the path's remaining dashes are not drawn, which bounds a pattern far finer
 // than a pixel. At most kMaxOutlinePoints (2^23) points are built per call: a
 // subpath that would take more is not drawn, nor any after it, which bounds the
-// memory of round joins on a stroke millions of pixels wide.
+// memory of round joins on a stroke millions of pixels wide, and of curves
+// sampled past what could fit (a segment's samples stop there; after such a
+// subpath the working buffers are freed rather than kept for the next call).
 #pragma once
 
 #include "casteljau/curve/path.h"
