@@ -111,5 +111,32 @@ TEST(Memory, AStrokePastThePointLimitStopsSamplingWhereItCannotFit) {
     EXPECT_LE(g_peak_held - before, std::size_t(1) << 29) << g_peak_held - before << " bytes";
 }
 
+// Round U-turns on a stroke 1e6 px wide (as tests/bad_input's
+// round_joins_1e6_px_wide.svg): 8,190 outline points a turn in every strip
+// of rows. Each thread built its own strips' outlines at once, so the
+// memory grew with the threads (the 1024 px file with 8,000 turns: 336 MB
+// held on one thread, 1.29 GB on eight). Through the memory gate
+// (render/memory_gate.h), four threads hold about what one does.
+TEST(Memory, HostileStrokesHoldAboutAsMuchOnFourThreadsAsOnOne) {
+    std::string d = "M30 30";
+    for (int i = 0; i <= 200; ++i) d += i % 2 ? " L30 30" : " L34 30";
+    const SvgResult doc = parse_svg(
+        "<svg xmlns='http://www.w3.org/2000/svg' width='256' height='512'><path d='" + d +
+            "' fill='none' stroke='black' stroke-width='1e6' stroke-linejoin='round'/></svg>",
+        "round-joins.svg");
+    ASSERT_TRUE(doc.scene) << doc.error;
+    const auto peak = [&](int threads) {
+        BandRenderer r;
+        Canvas8 canvas(256, 512); // four strips, four bands
+        g_peak_held = g_held.load();
+        const std::size_t before = g_held;
+        r.render(*doc.scene, Affine::identity(), canvas, {}, {}, threads);
+        return g_peak_held - before;
+    };
+    const std::size_t one = peak(1), four = peak(4);
+    // Each thread waiting at the gate holds up to 2^16 points and samples.
+    EXPECT_LE(four, one + (std::size_t(16) << 20)) << "1 thread: " << one << " bytes, 4: " << four;
+}
+
 } // namespace
 } // namespace casteljau

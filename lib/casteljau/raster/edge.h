@@ -63,6 +63,8 @@ class EdgeList {
     void reset(PixelRect clip, int row_begin, int row_end);
     /// Starts a new list for a width x height canvas (all rows).
     void reset(int width, int height) { reset({0, 0, width, height}, 0, height); }
+    /// Frees the storage (the edges are gone).
+    void release() { edges_ = std::vector<Edge>(); }
     /// Adds the segment a -> b, clipped. Precondition: finite coordinates.
     /// Inline for the common case, a segment inside the clip, as every
     /// flattened vertex of a shape on the canvas adds one.

@@ -31,6 +31,13 @@ class Rasterizer {
     /// Emits the spans of the rows [edges.row_begin(), edges.row_end()), in the
     /// clip rectangle's columns, in absolute pixel coordinates.
     void fill(const EdgeList& edges, FillRule rule, bool antialias, SpanSink& sink);
+    /// Frees the buffers that grow with the edges (those that grow with the
+    /// width stay).
+    void release() {
+        keys_ = std::vector<std::uint64_t>(), row_start_ = std::vector<std::uint32_t>();
+        sorted_ = std::vector<Active>(), active_ = std::vector<Active>();
+        crossings_ = std::vector<Crossing>();
+    }
 
   private:
     struct Active {

@@ -5,6 +5,7 @@
 #include "casteljau/paint/blend.h"
 #include "casteljau/paint/mask.h"
 #include "casteljau/raster/path_edges.h"
+#include "casteljau/render/memory_gate.h"
 #include "casteljau/stroke/stroker.h"
 
 #include <algorithm>
@@ -88,6 +89,7 @@ void Renderer::begin(const Affine& view, const RenderOptions& options, const Pix
     layer_bytes_ = 0;
     layer_sizes_.clear();
     filter_depth_ = 0;
+    stroker_.set_gate(&memory_gate::enter);
 }
 
 Rect Renderer::reach_box(const Shape& s, const Affine& view) {
@@ -252,6 +254,28 @@ void Renderer::draw_shape(const Shape& s, Target& target, float opacity) {
     if (s.stroke && !s.stroke_first) draw_stroke(s, m, target, opacity);
 }
 
+// A stroke strip whose outline passed the memory gate (memory_gate.h) frees
+// the buffers it grew, its edges' and the rasterizer's too, and leaves the
+// gate, once painted: so no thread holds more than a few megabytes of them
+// outside the gate, nor stays in it past the strip.
+class Renderer::StrokeMemory {
+  public:
+    explicit StrokeMemory(Renderer& r) : r_(r), depth_(memory_gate::depth()) {}
+    ~StrokeMemory() {
+        if (memory_gate::depth() == depth_) return;
+        r_.stroker_.release();
+        r_.edges_.release();
+        r_.raster_.release();
+        memory_gate::leave();
+    }
+    StrokeMemory(const StrokeMemory&) = delete;
+    StrokeMemory& operator=(const StrokeMemory&) = delete;
+
+  private:
+    Renderer& r_;
+    int depth_;
+};
+
 template <class Target>
 void Renderer::draw_stroke(const Shape& s, const Affine& m, Target& target, float opacity) {
     const Stroke& st = *s.stroke;
@@ -282,6 +306,7 @@ void Renderer::draw_stroke(const Shape& s, const Affine& m, Target& target, floa
     const double tolerance = options_->flatten.tolerance / m.max_scale();
     const Affine to_user = m.inverse();
     for (int y0 = top; y0 < bottom;) {
+        const StrokeMemory memory(*this);
         const int strip = frame_.y0 + (y0 - frame_.y0) / kStrokeStripRows * kStrokeStripRows;
         const int y1 = std::min(bottom, strip + kStrokeStripRows);
         const auto t = stage_start(*options_);

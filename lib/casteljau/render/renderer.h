@@ -122,6 +122,7 @@ class Renderer {
     void set_layer_budget(std::size_t bytes) { layer_budget_ = bytes; }
 
   private:
+    class StrokeMemory; // draw_stroke's: the memory gate's side (renderer.cpp)
     void begin(const Affine& view, const RenderOptions& options, const PixelRect& frame);
     template <class Target>
     void draw_children(const Group& g, Target& target);

@@ -57,6 +57,33 @@ constexpr double kMaxArcSteps = 1 << 12;
 // million-segment zigzag of tests/bad_input, all in one strip.
 constexpr std::size_t kMaxOutlinePoints = std::size_t(1) << 23;
 
+// Elements a working buffer of one call (points, samples, vertices, dash
+// pieces) may hold before the call passes the stroker's gate (stroker.h,
+// set_gate): at most some 2^16 * 200 bytes = 13 MB of them all, which every
+// thread may hold at once. Ordinary strokes stay below: the tiger's largest
+// holds about 2,000 points; a path of 65,536 segments passes.
+constexpr std::size_t kUngated = std::size_t(1) << 16;
+
+// The gate of one call, passed at most once, when a buffer first reaches
+// kUngated elements.
+struct Growth {
+    void (*gate)() = nullptr;
+    bool through = false;
+    // A buffer holds n elements.
+    void reached(std::size_t n) {
+        if (n >= kUngated && !through) {
+            through = true;
+            if (gate) gate();
+        }
+    }
+    // Whether a buffer of n elements may take one more within `limit`.
+    bool may_grow(std::size_t n, std::size_t limit) {
+        if (n >= limit) return false;
+        reached(n);
+        return true;
+    }
+};
+
 // (b): the normal may turn by dphi between samples; at least 4 samples per
 // quarter turn keep round joins and tiny widths sensible too. dphi =
 // 2 acos(1 - x), x = tol / 2h, is computed as 4 asin(sqrt(x / 2)), the same
@@ -167,9 +194,9 @@ struct Interior<CubicBez> {
 class Sampler {
   public:
     // dphi = max_normal_turn(h, tol).
-    Sampler(double h, double tol, double dphi, std::vector<FlatVertex>& vertices)
+    Sampler(double h, double tol, double dphi, std::vector<FlatVertex>& vertices, Growth& growth)
         : tol_(tol), base_tol_(base_tolerance(h, tol, dphi)), cos_dphi_(std::cos(dphi)),
-          vertices_(vertices) {}
+          vertices_(vertices), growth_(growth) {}
 
     // Samples of one segment, t = 0 first, and of its end tangents (the first
     // and last samples'), with handles shorter than kUnresolved tolerances
@@ -201,7 +228,7 @@ class Sampler {
         vertices_.clear();
         flatten_curve(c, FlattenOptions{base_tol, FlattenMethod::Guided, 0},
                       [&](const FlatVertex& v) {
-                          if (vertices_.size() < limit) vertices_.push_back(v);
+                          if (growth_.may_grow(vertices_.size(), limit)) vertices_.push_back(v);
                       });
         if (vertices_.size() >= limit) return false;
         FlatVertex a{c.start(), 0.0};
@@ -241,7 +268,7 @@ class Sampler {
                 sp = {sp.a, mid, sp.depth + 1};
                 continue;
             }
-            if (out.size() >= limit) return false;
+            if (!growth_.may_grow(out.size(), limit)) return false;
             out.push_back({sp.b.p, db, turns});
             d = db;
             if (right_halves.empty()) return true;
@@ -251,6 +278,7 @@ class Sampler {
 
     double tol_, base_tol_, cos_dphi_;
     std::vector<FlatVertex>& vertices_; // the flattener's, a buffer kept between strokes
+    Growth& growth_;
 };
 
 // The subpaths to outline (the visible part of a path, or its dashes), with
@@ -320,6 +348,7 @@ struct Pieces {
 // Everything a stroke is built in, kept between strokes: once the buffers
 // have grown, outlining allocates nothing.
 struct Stroker::Buffers {
+    Growth growth; // the call's
     Pieces pieces;
     std::vector<const Segment*> segs;
     std::vector<FlatVertex> vertices;
@@ -339,14 +368,16 @@ struct Stroker::Buffers {
         return count++;
     }
 
-    // Frees the working buffers and the polygons past the outline's, once a
-    // subpath outgrew the point limit: kept, the hundreds of megabytes it
-    // took would stay with the renderer for every stroke after it (a batch's
-    // next files, a fuzzer's next inputs).
-    void release_after_limit() {
-        vertices = {}, samples = {}, before = {}, head = {}, right = {};
-        polygons.resize(count);
+    // Frees every buffer but the first `keep` polygons of the outline. (A
+    // vector assigned {} keeps its storage: the initializer-list overload.)
+    void release(std::size_t keep) {
+        polygons.resize(keep);
         polygons.shrink_to_fit();
+        Buffers kept;
+        kept.growth = growth;
+        kept.polygons = std::move(polygons);
+        kept.count = keep;
+        *this = std::move(kept);
     }
 };
 
@@ -357,7 +388,7 @@ class Outline {
   public:
     Outline(double h, double tol, const StrokeGeometry& st, Stroker::Buffers& b)
         : h_(h), tol_(tol), dphi_(max_normal_turn(h, tol)), st_(st), b_(b),
-          sampler_(h, tol, dphi_, b.vertices) {}
+          sampler_(h, tol, dphi_, b.vertices, b.growth) {}
 
     // Arc of radius h around c from direction u0 to u1, turning `sweep` radians
     // (signed), endpoints excluded.
@@ -486,6 +517,7 @@ class Outline {
             last_d = samples.back().d;
             last_p = samples.back().p;
             if (left.size() + right.size() > budget) return drop();
+            b_.growth.reached(kMaxOutlinePoints - budget + left.size() + right.size());
         }
         if (closed) {
             const Neighbours around{samples, head, h_ + tol_};
@@ -577,6 +609,7 @@ void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
                 from_start = ta == 0 && &seg == &sp.segments.front();
             if (!open) out.move_to(segment_start(piece));
             out.append(piece);
+            b.growth.reached(out.segments.size());
             open = true;
         };
         for (const Segment& seg : sp.segments) {
@@ -584,7 +617,10 @@ void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
             std::visit(
                 [&](const auto& c) {
                     flatten_curve(c, FlattenOptions{tol * 1e-3, FlattenMethod::Adaptive, 0},
-                                  [&](const FlatVertex& x) { v.push_back(x); });
+                                  [&](const FlatVertex& x) {
+                                      b.growth.reached(v.size());
+                                      v.push_back(x);
+                                  });
                 },
                 seg);
             double t_from = 0;
@@ -654,7 +690,7 @@ void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
 // (It had caps there instead, where the renderer's strip of rows cut it
 // elsewhere; and a line wholly outside did not count as a cut, so the
 // parts were closed with a line across the drawing.)
-void visible_part(const Path& path, const Rect& keep, Pieces& out) {
+void visible_part(const Path& path, const Rect& keep, Pieces& out, Growth& growth) {
     const double small = 4 * std::max(keep.width(), keep.height());
     for (const Subpath& sp : path.subpaths()) {
         bool open = false, cut = false; // cut: a part of it has been left out
@@ -664,6 +700,7 @@ void visible_part(const Path& path, const Rect& keep, Pieces& out) {
             if (!open && out.runs.size() == first) from_start = !cut;
             if (!open) out.move_to(segment_start(piece));
             out.append(piece);
+            growth.reached(out.segments.size());
             open = true;
         };
         const auto keep_line = [&](Point a, Point b) {
@@ -722,6 +759,7 @@ std::span<const Polygon> Stroker::outline(const Path& path, const StrokeGeometry
                                           double tolerance, const Rect& visible) {
     Buffers& b = *b_;
     b.count = 0;
+    b.growth.through = false;
     const double h = style.width / 2;
     if (!(h > 0) || !(tolerance > 0)) return {};
     // How far the outline reaches from the path: a miter up to the limit, a
@@ -736,7 +774,7 @@ std::span<const Polygon> Stroker::outline(const Path& path, const StrokeGeometry
         return outline_scaled(path, style, tolerance, visible, size);
     b.pieces.clear();
     if (style.dashes.empty())
-        visible_part(path, keep, b.pieces);
+        visible_part(path, keep, b.pieces, b.growth);
     else
         dashed(path, style, tolerance, keep, b);
     Outline outline(h, tolerance, style, b);
@@ -747,13 +785,20 @@ std::span<const Polygon> Stroker::outline(const Path& path, const StrokeGeometry
         if (points >= kMaxOutlinePoints ||
             !outline.subpath(run.start, b.pieces.segments_of(run), run.closed,
                              kMaxOutlinePoints - points)) {
-            b.release_after_limit();
+            // The hundreds of megabytes it took are not kept for the next
+            // stroke (a batch's next files, a fuzzer's next inputs).
+            b.release(b.count);
             break;
         }
         for (std::size_t i = before; i < b.count; ++i) points += b.polygons[i].size();
+        b.growth.reached(points);
     }
     return {b.polygons.data(), b.count};
 }
+
+void Stroker::set_gate(void (*gate)()) { b_->growth.gate = gate; }
+
+void Stroker::release() { b_->release(0); }
 
 // outline() at 2^-k of the size, so that the largest magnitude is at most
 // kMaxMagnitude, then scaled back: powers of two scale doubles exactly (the

@@ -121,6 +121,16 @@ class Stroker {
     std::span<const Polygon> outline(const Path& path, const StrokeGeometry& style,
                                      double tolerance, const Rect& visible = Rect::everything());
 
+    /// A function outline() calls, at most once a call, before its working
+    /// buffers grow past a few megabytes (2^16 points, samples or pieces;
+    /// stroker.cpp, kUngated); nullptr (the default) for none. A renderer
+    /// passes render/memory_gate.h's enter, which lets one thread at a time
+    /// hold more.
+    void set_gate(void (*gate)());
+
+    /// Frees every buffer, the last outline's polygons too.
+    void release();
+
     /// The buffers (opaque: defined in stroker.cpp).
     struct Buffers;
 
