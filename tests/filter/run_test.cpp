@@ -128,5 +128,35 @@ TEST(FilterRun, ACutWindowGivesTheWholeWindowsPixels) {
         }
 }
 
+// Sixteen offsets of the source, merged: the result reads the source as
+// far as the longest shift, not as far as all shifts added up (which made
+// the renderer's windows three times a band's height, and their memory).
+TEST(FilterRun, ParallelOffsetsReachAsFarAsTheLongest) {
+    const Rect all{0, 0, 60, 40};
+    FilterGraph g{all, {}};
+    std::vector<int> layers;
+    for (int i = 0; i < 16; ++i) {
+        g.primitives.push_back(prim(Offset{double(i), 0}, {filter_input::kSourceGraphic}, all));
+        layers.push_back(i);
+    }
+    g.primitives.push_back(prim(Merge{}, layers, all));
+    EXPECT_EQ(filter_reach(g, Affine::identity()), 16.0) << "15 px and a pixel of rounding";
+    EXPECT_EQ(filter_reach(g, Affine::scale(2, 2)), 31.0);
+    const FilterImage in = source(60, 40, 5);
+    FilterImage whole = in;
+    ASSERT_TRUE(run_filter(g, Affine::identity(), {&whole}));
+    const int x0 = 30, x1 = 34, reach = 16;
+    FilterImage part;
+    part.reset({x0 - reach, 0, x1 + reach, 40}, false);
+    for (int y = 0; y < 40; ++y)
+        for (int x = part.box.x0; x < part.box.x1; ++x) part.at(x - part.box.x0, y) = in.at(x, y);
+    ASSERT_TRUE(run_filter(g, Affine::identity(), {&part}));
+    for (int y = 0; y < 40; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const Premul a = whole.at(x, y), b = part.at(x - part.box.x0, y);
+            ASSERT_TRUE(a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a) << x << "," << y;
+        }
+}
+
 } // namespace
 } // namespace casteljau

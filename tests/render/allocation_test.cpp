@@ -4,6 +4,7 @@
 // is replaced in this file to count allocations and keep the largest; both
 // are read only around the calls measured here.
 #include "casteljau/render/bands.h"
+#include "casteljau/render/memory_gate.h"
 #include "casteljau/render/worker_pool.h"
 #include "casteljau/stroke/stroker.h"
 #include "casteljau/svg/reader.h"
@@ -111,31 +112,70 @@ TEST(Memory, AStrokePastThePointLimitStopsSamplingWhereItCannotFit) {
     EXPECT_LE(g_peak_held - before, std::size_t(1) << 29) << g_peak_held - before << " bytes";
 }
 
+// The memory budget (render/memory_gate.h) at `bytes` for a test's scope:
+// small, so that small scenes show what large ones do at the default.
+class Budget {
+  public:
+    explicit Budget(std::size_t bytes) { memory_gate::set_budget(bytes); }
+    ~Budget() { memory_gate::set_budget(was_); }
+    Budget(const Budget&) = delete;
+    Budget& operator=(const Budget&) = delete;
+
+  private:
+    std::size_t was_ = memory_gate::budget();
+};
+
+// Bytes held at most while `scene` renders on `threads` threads.
+std::size_t peak_held(const Scene& scene, int threads) {
+    BandRenderer r;
+    Canvas8 canvas(int(scene.width), int(scene.height));
+    g_peak_held = g_held.load();
+    const std::size_t before = g_held;
+    r.render(scene, Affine::identity(), canvas, {}, {}, threads);
+    return g_peak_held - before;
+}
+
 // Round U-turns on a stroke 1e6 px wide (as tests/bad_input's
 // round_joins_1e6_px_wide.svg): 8,190 outline points a turn in every strip
 // of rows. Each thread built its own strips' outlines at once, so the
-// memory grew with the threads (the 1024 px file with 8,000 turns: 336 MB
-// held on one thread, 1.29 GB on eight). Through the memory gate
-// (render/memory_gate.h), four threads hold about what one does.
+// memory grew with the threads (a 1024 px file of 8,000 turns: 1.5 GB
+// resident on eight, 210 MB on one). Past the budget, one thread at a time
+// holds more: four hold what one does, and the budget.
 TEST(Memory, HostileStrokesHoldAboutAsMuchOnFourThreadsAsOnOne) {
     std::string d = "M30 30";
     for (int i = 0; i <= 200; ++i) d += i % 2 ? " L30 30" : " L34 30";
     const SvgResult doc = parse_svg(
         "<svg xmlns='http://www.w3.org/2000/svg' width='256' height='512'><path d='" + d +
             "' fill='none' stroke='black' stroke-width='1e6' stroke-linejoin='round'/></svg>",
-        "round-joins.svg");
+        "round-joins.svg"); // four strips, four bands
     ASSERT_TRUE(doc.scene) << doc.error;
-    const auto peak = [&](int threads) {
-        BandRenderer r;
-        Canvas8 canvas(256, 512); // four strips, four bands
-        g_peak_held = g_held.load();
-        const std::size_t before = g_held;
-        r.render(*doc.scene, Affine::identity(), canvas, {}, {}, threads);
-        return g_peak_held - before;
-    };
-    const std::size_t one = peak(1), four = peak(4);
-    // Each thread waiting at the gate holds up to 2^16 points and samples.
-    EXPECT_LE(four, one + (std::size_t(16) << 20)) << "1 thread: " << one << " bytes, 4: " << four;
+    const Budget budget(std::size_t(4) << 20);
+    const std::size_t one = peak_held(*doc.scene, 1), four = peak_held(*doc.scene, 4);
+    // Measured: 31.1 MB on one, 33.3 MB on four (115.8 MB with no budget).
+    EXPECT_LE(four, one + (std::size_t(12) << 20)) << "1 thread: " << one << " bytes, 4: " << four;
+}
+
+// Sixteen offsets of the source merged: every result held until the merge,
+// 23 images of a band's window. Each thread ran its own bands' chains at
+// once (sixteen offsets on a 4096 x 1024 file: 1.0 GB resident on one
+// thread, 2.6 GB on four); past the budget, one chain at a time runs.
+TEST(Memory, HeavyFiltersHoldAboutAsMuchOnFourThreadsAsOnOne) {
+    std::string filter = "<filter id='f' x='0' y='0' width='1' height='1'>", merge = "<feMerge>";
+    for (int i = 0; i < 16; ++i) {
+        const std::string n = std::to_string(i);
+        filter += "<feOffset in='SourceGraphic' dx='" + n + "' result='o" + n + "'/>";
+        merge += "<feMergeNode in='o" + n + "'/>";
+    }
+    const SvgResult doc = parse_svg(
+        "<svg xmlns='http://www.w3.org/2000/svg' width='512' height='512'>" + filter + merge +
+            "</feMerge></filter><rect width='512' height='512' fill='#2a6fb0' "
+            "filter='url(#f)'/></svg>",
+        "offsets.svg"); // four bands
+    ASSERT_TRUE(doc.scene) << doc.error;
+    const Budget budget(std::size_t(4) << 20);
+    const std::size_t one = peak_held(*doc.scene, 1), four = peak_held(*doc.scene, 4);
+    // Measured: 28.3 MB on one, 18.1 MB on four (68.4 MB with no budget).
+    EXPECT_LE(four, one + (std::size_t(12) << 20)) << "1 thread: " << one << " bytes, 4: " << four;
 }
 
 } // namespace

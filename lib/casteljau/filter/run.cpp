@@ -184,11 +184,21 @@ PixelRect filter_pixel_region(const FilterGraph& g, const Affine& to_device) {
     return device_pixels(g.region, to_device);
 }
 
+// Along the graph: a result reads its inputs within its own reach, and
+// they theirs within theirs, so the filter's result (the last primitive's)
+// reaches as far as its longest path of inputs adds up to. (The sum over
+// all primitives counted sixteen offsets of the source, merged, sixteen
+// times: a window three times the band's height, and its memory.)
 double filter_reach(const FilterGraph& g, const Affine& to_device) {
     const Scales s(to_device);
-    double r = 0;
-    for (const FilterPrimitive& p : g.primitives) r += reach_of(p, s);
-    return r;
+    std::vector<double> reach(g.primitives.size());
+    for (std::size_t i = 0; i < g.primitives.size(); ++i) {
+        double in = 0;
+        for (int k : g.primitives[i].inputs)
+            if (k >= 0 && std::size_t(k) < i) in = std::max(in, reach[std::size_t(k)]);
+        reach[i] = in + reach_of(g.primitives[i], s);
+    }
+    return reach.empty() ? 0.0 : reach.back();
 }
 
 namespace {
@@ -358,9 +368,7 @@ bool run_filter(const FilterGraph& g, const Affine& to_device, const FilterSourc
     FilterImage& source = *io.source;
     const PixelRect window = source.box;
     const std::size_t bytes = source.px.size() * sizeof(Premul);
-    // At most every result, its two converted inputs and the source alpha
-    // at once: a conservative count, checked before any work.
-    const std::size_t held = std::min(g.primitives.size(), std::size_t(16)) + 4;
+    const std::size_t held = filter_held_images(g);
     if (!valid(g) || (bytes > 0 && held > kMaxFilterBytes / bytes)) {
         source.reset(window, false);
         return false;

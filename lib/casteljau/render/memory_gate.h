@@ -1,27 +1,57 @@
-// One thread at a time past a few megabytes of stroke working memory.
+// Working memory of strokes and filters: a budget the threads share, and
+// beyond it one thread at a time.
 //
 // Why: hostile input can make a stroke's outline amplify a small file into
 // gigabytes (round joins on a stroke 1e6 px wide, a circle 1e61 px tall,
-// a million dashes); the stroker's point limit (stroker.h) bounds one call,
-// about 600 MB at worst, but every thread of a frame, and every file of a
-// batch, makes its own calls at once: eight threads took 1.5 GB on such a
-// file, and the CLI's default is one thread per core. So a renderer's
-// stroker passes this gate once its working buffers grow past kUngated
-// elements (stroker.cpp: a few megabytes), and the renderer, once the
-// stroke is painted, frees those buffers and leaves (Renderer::draw_stroke).
-// The memory of all threads together is then at most one full call plus the
-// others' few megabytes, whatever the number of threads; the picture does
-// not change, only the order in which such strokes are drawn.
+// a million dashes), and a filter chain hold a gigabyte of images; the
+// stroker's point limit and the filters' byte limit bound one call, but
+// every thread of a frame, and every file of a batch, made its own calls at
+// once: eight threads took 1.5 GB on such a stroke, four 2.6 GB on such a
+// filter, and the CLI's default is a thread per core.
+//
+// How: a renderer reserves what its stroker's and filters' buffers grow to
+// (an estimate in bytes, kept while the buffers are) from kSharedBytes. When
+// the budget has not enough left, the thread enters the gate instead, holds
+// whatever the call takes (up to the call's own limits), and, once the
+// stroke or filter is drawn, frees those buffers, gives back its
+// reservation and leaves (Renderer::StrokeMemory, Renderer::FilterMemory).
+// So the threads together hold at most kSharedBytes plus one call's worth,
+// whatever their number; ordinary files stay within the budget and never
+// wait. The pictures do not change, only the order in which the heavy
+// strokes and filters are drawn.
 //
 // Invariants. The gate is one process-wide mutex with a per-thread depth, so
 // a thread already through it passes again without waiting (a pattern
 // tile's stroke drawn while the stroke it paints holds it). No thread waits
-// on another while through it: it is left before a renderer returns from
-// the stroke, so neither a band's pool nor a batch's workers can deadlock
-// on it.
+// on another while through it: it is left before the renderer returns from
+// the stroke or filter, so neither a band's pool nor a batch's workers can
+// deadlock on it. Not fork-safe: a child forked while another thread is
+// through the gate would wait forever at its first heavy stroke.
 #pragma once
 
+#include <cstddef>
+
 namespace casteljau::memory_gate {
+
+/// The working memory all threads may hold outside the gate, together, by
+/// default: 256 MiB.
+inline constexpr std::size_t kSharedBytes = std::size_t(256) << 20;
+
+/// Sets that budget for the process (a program that allows its renders
+/// more or less memory; the tests, a small one). Reservations already held
+/// stay; past the new budget, they only block new ones.
+void set_budget(std::size_t bytes);
+
+/// The budget now.
+std::size_t budget();
+
+/// Takes `bytes` from the shared budget and returns true; or, when it has
+/// not that much left (or this thread is through the gate already), enters
+/// the gate and returns false.
+bool reserve(std::size_t bytes);
+
+/// Gives back bytes that reserve() took.
+void unreserve(std::size_t bytes);
 
 /// Waits until no other thread is through the gate, then passes it (again,
 /// one level deeper, when this thread already is).
@@ -32,5 +62,40 @@ void leave();
 
 /// How many times this thread is through the gate (0: it is not).
 int depth();
+
+/// Bytes reserved from the budget, given back when reset or destroyed.
+class Reservation {
+  public:
+    Reservation() = default;
+    /// Takes over o's bytes.
+    Reservation(Reservation&& o) noexcept : bytes_(o.bytes_) { o.bytes_ = 0; }
+    /// Gives back its own bytes and takes over o's.
+    Reservation& operator=(Reservation&& o) noexcept {
+        if (this != &o) {
+            reset();
+            bytes_ = o.bytes_;
+            o.bytes_ = 0;
+        }
+        return *this;
+    }
+    ~Reservation() { reset(); }
+
+    /// Grows to at least `bytes` (reserve); false when the budget had not
+    /// enough left, and this thread entered the gate instead.
+    bool grow_to(std::size_t bytes) {
+        if (bytes <= bytes_) return true;
+        if (!reserve(bytes - bytes_)) return false;
+        bytes_ = bytes;
+        return true;
+    }
+    /// Gives everything back.
+    void reset() {
+        if (bytes_) unreserve(bytes_);
+        bytes_ = 0;
+    }
+
+  private:
+    std::size_t bytes_ = 0;
+};
 
 } // namespace casteljau::memory_gate

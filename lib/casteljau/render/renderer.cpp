@@ -5,7 +5,6 @@
 #include "casteljau/paint/blend.h"
 #include "casteljau/paint/mask.h"
 #include "casteljau/raster/path_edges.h"
-#include "casteljau/render/memory_gate.h"
 #include "casteljau/stroke/stroker.h"
 
 #include <algorithm>
@@ -89,7 +88,7 @@ void Renderer::begin(const Affine& view, const RenderOptions& options, const Pix
     layer_bytes_ = 0;
     layer_sizes_.clear();
     filter_depth_ = 0;
-    stroker_.set_gate(&memory_gate::enter);
+    stroker_.set_memory_budget(&memory_gate::reserve, &memory_gate::unreserve);
 }
 
 Rect Renderer::reach_box(const Shape& s, const Affine& view) {
@@ -254,10 +253,11 @@ void Renderer::draw_shape(const Shape& s, Target& target, float opacity) {
     if (s.stroke && !s.stroke_first) draw_stroke(s, m, target, opacity);
 }
 
-// A stroke strip whose outline passed the memory gate (memory_gate.h) frees
-// the buffers it grew, its edges' and the rasterizer's too, and leaves the
-// gate, once painted: so no thread holds more than a few megabytes of them
-// outside the gate, nor stays in it past the strip.
+// A stroke strip whose buffers the memory budget refused (memory_gate.h:
+// it went on through the gate) frees them once painted, its edges' and the
+// rasterizer's too, with their reservation, and leaves the gate: so what
+// threads hold outside the gate stays within the budget, and none stays in
+// it past the strip.
 class Renderer::StrokeMemory {
   public:
     explicit StrokeMemory(Renderer& r) : r_(r), depth_(memory_gate::depth()) {}
@@ -445,6 +445,28 @@ PixelRect grown(const PixelRect& r, double by) {
 
 } // namespace
 
+// A filter chain's buffers reserve what it may hold from the memory budget
+// (past kUnreservedFilterBytes) before it draws anything; refused, the
+// chain runs through the gate, and once it has run frees its buffers (the
+// reservation with them) and leaves. The source layer's storage is the
+// layer budget's, split between the threads.
+class Renderer::FilterMemory {
+  public:
+    FilterMemory(FilterBuffers& b, std::size_t bytes)
+        : b_(b), gated_(bytes > kUnreservedFilterBytes && !b.reserved.grow_to(bytes)) {}
+    ~FilterMemory() {
+        if (!gated_) return;
+        b_ = FilterBuffers();
+        memory_gate::leave();
+    }
+    FilterMemory(const FilterMemory&) = delete;
+    FilterMemory& operator=(const FilterMemory&) = delete;
+
+  private:
+    FilterBuffers& b_;
+    bool gated_;
+};
+
 template <class Target>
 bool Renderer::filter_layer(const Group& g, Target& layer) {
     // One window for the whole chain: the union of the filters' regions,
@@ -463,11 +485,17 @@ bool Renderer::filter_layer(const Group& g, Target& layer) {
     const PixelRect frame = grown(frame_, std::min(reach, double(kMaxFilterMargin)));
     const PixelRect window = regions.intersected(frame).intersected(grown(target, reach));
     if (window.is_empty()) return true; // nothing to draw here
-    Target* src = acquire_layer<Target>(window.width(), window.height(), window.x0, window.y0);
-    if (!src) return false;
     if (filter_buffers_.size() <= filter_depth_)
         filter_buffers_.push_back(std::make_unique<FilterBuffers>());
-    FilterBuffers& buf = *filter_buffers_[filter_depth_++]; // nested filters take the next
+    FilterBuffers& buf = *filter_buffers_[filter_depth_]; // nested filters take the next
+    std::size_t images = 0; // the source, the inputs and what a run holds, at most
+    for (const auto& f : g.filters)
+        images = std::max(images, 3 + f->images.size() + filter_held_images(f->graph));
+    const FilterMemory memory(buf, images * std::size_t(window.width()) *
+                                       std::size_t(window.height()) * sizeof(Premul));
+    Target* src = acquire_layer<Target>(window.width(), window.height(), window.x0, window.y0);
+    if (!src) return false;
+    ++filter_depth_;
     const PixelRect saved = frame_;
     frame_ = frame; // the content just outside the frame is drawn too
     draw_children(g, *src);

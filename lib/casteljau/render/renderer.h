@@ -29,6 +29,7 @@
 #include "casteljau/paint/image_shader.h"
 #include "casteljau/raster/edge.h"
 #include "casteljau/raster/rasterizer.h"
+#include "casteljau/render/memory_gate.h"
 #include "casteljau/scene/scene.h"
 #include "casteljau/stroke/stroker.h"
 
@@ -59,6 +60,12 @@ inline constexpr std::size_t kMaxLayerBytes = std::size_t(512) << 20;
 /// or offset pulls that much of what lies outside the frame into it.
 /// (resvg draws nothing outside the canvas; browsers draw the whole region.)
 inline constexpr int kMaxFilterMargin = 256;
+
+/// The bytes of images a filter chain may hold (its source, inputs and
+/// intermediate results, counted as run_filter bounds them) without a
+/// reservation from the memory budget (memory_gate.h): 4 MiB, a blur on a
+/// band of a 512 px wide frame.
+inline constexpr std::size_t kUnreservedFilterBytes = std::size_t(4) << 20;
 
 /// How to render: flattening, antialiasing, statistics, gradient interpolation.
 struct RenderOptions {
@@ -123,6 +130,7 @@ class Renderer {
 
   private:
     class StrokeMemory; // draw_stroke's: the memory gate's side (renderer.cpp)
+    class FilterMemory; // filter_layer's, likewise
     void begin(const Affine& view, const RenderOptions& options, const PixelRect& frame);
     template <class Target>
     void draw_children(const Group& g, Target& target);
@@ -192,7 +200,8 @@ class Renderer {
     struct FilterBuffers {
         FilterImage source;
         std::vector<FilterImage> inputs;
-        std::vector<FilterImage> pool; ///< run_filter's intermediate images
+        std::vector<FilterImage> pool;     ///< run_filter's intermediate images
+        memory_gate::Reservation reserved; ///< what they may grow to, while kept
     };
     std::vector<std::unique_ptr<FilterBuffers>> filter_buffers_;
     std::size_t filter_depth_ = 0;

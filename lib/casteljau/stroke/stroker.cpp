@@ -57,24 +57,36 @@ constexpr double kMaxArcSteps = 1 << 12;
 // million-segment zigzag of tests/bad_input, all in one strip.
 constexpr std::size_t kMaxOutlinePoints = std::size_t(1) << 23;
 
-// Elements a working buffer of one call (points, samples, vertices, dash
-// pieces) may hold before the call passes the stroker's gate (stroker.h,
-// set_gate): at most some 2^16 * 200 bytes = 13 MB of them all, which every
-// thread may hold at once. Ordinary strokes stay below: the tiger's largest
-// holds about 2,000 points; a path of 65,536 segments passes.
-constexpr std::size_t kUngated = std::size_t(1) << 16;
+// The working memory the buffers are counted at (stroker.h,
+// set_memory_budget): 80 bytes per element of the largest (a point on its way
+// to coverage: itself, its edge and its sorted edge, with vectors' slack; a
+// dash piece is a segment of up to 72 bytes; a sample 40).
+constexpr std::size_t kElementBytes = 80;
+// Elements below which nothing is reserved (1.3 MB): the tiger's largest
+// stroke holds about 2,000 points, so ordinary strokes cost no atomic.
+constexpr std::size_t kUnreserved = std::size_t(1) << 14;
 
-// The gate of one call, passed at most once, when a buffer first reaches
-// kUngated elements.
+// The buffers' reservation from the memory budget, grown as they grow and
+// kept while they are; when the budget refuses, the call is `through` the
+// gate instead (the budget's reserve entered it), and grows on unreserved.
 struct Growth {
-    void (*gate)() = nullptr;
-    bool through = false;
+    bool (*reserve)(std::size_t) = nullptr;
+    void (*unreserve)(std::size_t) = nullptr;
+    std::size_t reserved = 0; // bytes
+    bool through = false;     // this call's
     // A buffer holds n elements.
     void reached(std::size_t n) {
-        if (n >= kUngated && !through) {
+        if (n < kUnreserved || through || !reserve || n * kElementBytes <= reserved) return;
+        // Twice as much as held, so that a growing buffer reserves a few times.
+        const std::size_t more = std::max(n * kElementBytes, 2 * reserved) - reserved;
+        if (reserve(more))
+            reserved += more;
+        else
             through = true;
-            if (gate) gate();
-        }
+    }
+    void give_back() {
+        if (unreserve && reserved) unreserve(reserved);
+        reserved = 0;
     }
     // Whether a buffer of n elements may take one more within `limit`.
     bool may_grow(std::size_t n, std::size_t limit) {
@@ -368,9 +380,11 @@ struct Stroker::Buffers {
         return count++;
     }
 
-    // Frees every buffer but the first `keep` polygons of the outline. (A
-    // vector assigned {} keeps its storage: the initializer-list overload.)
+    // Frees every buffer but the first `keep` polygons of the outline, and
+    // gives back the reservation. (A vector assigned {} keeps its storage:
+    // the initializer-list overload.)
     void release(std::size_t keep) {
+        growth.give_back();
         polygons.resize(keep);
         polygons.shrink_to_fit();
         Buffers kept;
@@ -743,9 +757,17 @@ void visible_part(const Path& path, const Rect& keep, Pieces& out, Growth& growt
 } // namespace
 
 Stroker::Stroker() : b_(std::make_unique<Buffers>()) {}
-Stroker::~Stroker() = default;
+Stroker::~Stroker() {
+    if (b_) b_->growth.give_back();
+}
 Stroker::Stroker(Stroker&&) noexcept = default;
-Stroker& Stroker::operator=(Stroker&&) noexcept = default;
+Stroker& Stroker::operator=(Stroker&& o) noexcept {
+    if (this != &o) {
+        if (b_) b_->growth.give_back();
+        b_ = std::move(o.b_);
+    }
+    return *this;
+}
 
 // The largest coordinate (or length) the outline is built at: squares of
 // lengths, which the sampler and the flattener take, stay far below the
@@ -796,7 +818,12 @@ std::span<const Polygon> Stroker::outline(const Path& path, const StrokeGeometry
     return {b.polygons.data(), b.count};
 }
 
-void Stroker::set_gate(void (*gate)()) { b_->growth.gate = gate; }
+void Stroker::set_memory_budget(bool (*reserve)(std::size_t), void (*unreserve)(std::size_t)) {
+    if (reserve == b_->growth.reserve && unreserve == b_->growth.unreserve) return;
+    b_->growth.give_back();
+    b_->growth.reserve = reserve;
+    b_->growth.unreserve = unreserve;
+}
 
 void Stroker::release() { b_->release(0); }
 

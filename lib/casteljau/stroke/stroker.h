@@ -121,14 +121,16 @@ class Stroker {
     std::span<const Polygon> outline(const Path& path, const StrokeGeometry& style,
                                      double tolerance, const Rect& visible = Rect::everything());
 
-    /// A function outline() calls, at most once a call, before its working
-    /// buffers grow past a few megabytes (2^16 points, samples or pieces;
-    /// stroker.cpp, kUngated); nullptr (the default) for none. A renderer
-    /// passes render/memory_gate.h's enter, which lets one thread at a time
-    /// hold more.
-    void set_gate(void (*gate)());
+    /// Where the working buffers reserve what they grow to, past 1.3 MB
+    /// (stroker.cpp, kUnreserved: 80 bytes an element of the largest), kept
+    /// while the buffers are: reserve(bytes) takes them, or refuses, and
+    /// outline() then grows on unreserved; unreserve gives back. A renderer
+    /// passes render/memory_gate.h's, whose reserve enters the gate when it
+    /// refuses. nullptr for both (the default): nothing is counted.
+    void set_memory_budget(bool (*reserve)(std::size_t), void (*unreserve)(std::size_t));
 
-    /// Frees every buffer, the last outline's polygons too.
+    /// Frees every buffer, the last outline's polygons too, and gives back
+    /// the reservation.
     void release();
 
     /// The buffers (opaque: defined in stroker.cpp).
