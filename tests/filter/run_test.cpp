@@ -158,5 +158,31 @@ TEST(FilterRun, ParallelOffsetsReachAsFarAsTheLongest) {
         }
 }
 
+// Under skew an offset moves rows by the matrix's row, not by its length
+// times a column norm: matrix(0.5 1 -0.5 1 0 0) takes (70.7, 70.7) 141
+// rows down, which the reach put at 113, so a band's window missed the
+// source rows the shift brings in.
+TEST(FilterRun, ASkewedOffsetReachesAsFarAsItMoves) {
+    const Affine skew{0.5, 1, -0.5, 1, 0, 0};
+    const Rect all{-400, -400, 800, 800};
+    const FilterGraph g{all, {prim(Offset{70.7, 70.7}, {filter_input::kSourceGraphic}, all)}};
+    const int reach = int(std::ceil(filter_reach(g, skew)));
+    EXPECT_GE(reach, 141);
+    const FilterImage in = source(20, 400, 6);
+    FilterImage whole = in;
+    ASSERT_TRUE(run_filter(g, skew, {&whole}));
+    const int y0 = 200, y1 = 210;
+    FilterImage part;
+    part.reset({0, y0 - reach, 20, y1 + reach}, false);
+    for (int y = part.box.y0; y < part.box.y1; ++y)
+        for (int x = 0; x < 20; ++x) part.at(x, y - part.box.y0) = in.at(x, y);
+    ASSERT_TRUE(run_filter(g, skew, {&part}));
+    for (int y = y0; y < y1; ++y)
+        for (int x = 0; x < 20; ++x) {
+            const Premul a = whole.at(x, y), b = part.at(x, y - part.box.y0);
+            ASSERT_TRUE(a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a) << x << "," << y;
+        }
+}
+
 } // namespace
 } // namespace casteljau

@@ -49,8 +49,17 @@ Subregion window_part(const PixelRect& px, const PixelRect& w) {
             std::clamp(px.x1, w.x0, w.x1) - w.x0, std::clamp(px.y1, w.y0, w.y1) - w.y0};
 }
 
+// The device shift of a user-space (dx, dy), as the run rounds it: its
+// larger coordinate, and a pixel for the rounding. (The length times the
+// largest column norm, as it was, falls short under skew: matrix(0.5 1
+// -0.5 1 0 0) moves (70.7, 70.7) by 141 rows, which that put at 113.)
+double shift_reach(const Affine& m, double dx, double dy) {
+    const Vec2 d = m * Vec2{dx, dy};
+    return std::max(std::fabs(d.x), std::fabs(d.y)) + 1;
+}
+
 // How far one primitive reads from the pixel it writes (device px).
-double reach_of(const FilterPrimitive& p, const Scales& s) {
+double reach_of(const FilterPrimitive& p, const Scales& s, const Affine& m) {
     constexpr double kFar = std::numeric_limits<double>::infinity();
     const double scale = std::max(s.sx, s.sy);
     return std::visit(
@@ -59,7 +68,7 @@ double reach_of(const FilterPrimitive& p, const Scales& s) {
                 if (b.edge != EdgeMode::None) return kFar;
                 return double(std::max(blur_reach(b.sx * s.sx), blur_reach(b.sy * s.sy)));
             },
-            [&](const Offset& o) { return std::hypot(o.dx, o.dy) * scale + 1; },
+            [&](const Offset& o) { return shift_reach(m, o.dx, o.dy); },
             [&](const Morphology& m) { return std::ceil(std::max(m.rx, m.ry) * scale); },
             [&](const Convolve& c) {
                 if (c.m.edge != EdgeMode::None) return kFar;
@@ -70,7 +79,7 @@ double reach_of(const FilterPrimitive& p, const Scales& s) {
             [&](const LightingOp&) { return 1.0; },
             [&](const DropShadow& d) {
                 return double(std::max(blur_reach(d.sx * s.sx), blur_reach(d.sy * s.sy))) +
-                       std::hypot(d.dx, d.dy) * scale + 1;
+                       shift_reach(m, d.dx, d.dy);
             },
             [&](const auto&) { return 0.0; },
         },
@@ -196,7 +205,7 @@ double filter_reach(const FilterGraph& g, const Affine& to_device) {
         double in = 0;
         for (int k : g.primitives[i].inputs)
             if (k >= 0 && std::size_t(k) < i) in = std::max(in, reach[std::size_t(k)]);
-        reach[i] = in + reach_of(g.primitives[i], s);
+        reach[i] = in + reach_of(g.primitives[i], s, to_device);
     }
     return reach.empty() ? 0.0 : reach.back();
 }
@@ -354,6 +363,12 @@ std::vector<std::size_t> last_uses(const FilterGraph& g) {
     return last;
 }
 
+// The run's temporaries (Results::temp): two converted inputs, a drop
+// shadow's two, SourceAlpha and a transparent image.
+constexpr std::size_t kTemporaries = 6;
+// last_uses' mark for a result already freed.
+constexpr std::size_t kFreed = std::size_t(-1);
+
 bool valid(const FilterGraph& g) {
     if (g.primitives.empty() || g.primitives.size() > kMaxFilterPrimitives) return false;
     for (std::size_t i = 0; i < g.primitives.size(); ++i)
@@ -364,12 +379,28 @@ bool valid(const FilterGraph& g) {
 
 } // namespace
 
+std::size_t filter_held_images(const FilterGraph& g) {
+    if (!valid(g)) return kTemporaries; // the run fails before it makes any result
+    // The run's own count: a result is made, and freed after the primitive
+    // that reads it last (once, should it list the input twice).
+    std::vector<std::size_t> last = last_uses(g);
+    std::size_t live = 0, most = 0;
+    for (std::size_t i = 0; i < g.primitives.size(); ++i) {
+        most = std::max(most, ++live);
+        for (int k : g.primitives[i].inputs)
+            if (k >= 0 && last[std::size_t(k)] == i) {
+                last[std::size_t(k)] = kFreed;
+                --live;
+            }
+    }
+    return most + kTemporaries;
+}
+
 bool run_filter(const FilterGraph& g, const Affine& to_device, const FilterSources& io) {
     FilterImage& source = *io.source;
     const PixelRect window = source.box;
     const std::size_t bytes = source.px.size() * sizeof(Premul);
-    const std::size_t held = filter_held_images(g);
-    if (!valid(g) || (bytes > 0 && held > kMaxFilterBytes / bytes)) {
+    if (!valid(g) || (bytes > 0 && filter_held_images(g) > kMaxFilterBytes / bytes)) {
         source.reset(window, false);
         return false;
     }
@@ -379,7 +410,7 @@ bool run_filter(const FilterGraph& g, const Affine& to_device, const FilterSourc
     const Affine to_user = to_device.inverse();
     if (!axis_aligned) // the source too: nothing outside the region is read
         cut_to(source, {0, 0, source.width(), source.height()}, g.region, to_user);
-    const std::vector<std::size_t> last = last_uses(g);
+    std::vector<std::size_t> last = last_uses(g);
     Results results(g.primitives.size(), window, io.pool);
     Inputs inputs(io, results);
     std::size_t live = 0;
@@ -416,6 +447,7 @@ bool run_filter(const FilterGraph& g, const Affine& to_device, const FilterSourc
         for (int k : p.inputs)
             if (k >= 0 && last[std::size_t(k)] == i) {
                 results.free(std::size_t(k));
+                last[std::size_t(k)] = kFreed; // an input listed twice is freed once
                 --live;
             }
     }

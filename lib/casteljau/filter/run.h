@@ -20,7 +20,6 @@
 #include "casteljau/filter/graph.h"
 #include "casteljau/geom/affine.h"
 
-#include <algorithm>
 #include <cstddef>
 #include <span>
 
@@ -29,12 +28,10 @@ namespace casteljau {
 /// The most bytes of intermediate images one run holds at once (1 GiB:
 /// sixty-four 2048 x 2048 float images). A run over it draws nothing.
 inline constexpr std::size_t kMaxFilterBytes = std::size_t(1) << 30;
-/// How many images a run of `g` may hold at once, at most: every result,
-/// its two converted inputs and the source alpha (a conservative count,
-/// checked against kMaxFilterBytes before any work).
-inline std::size_t filter_held_images(const FilterGraph& g) {
-    return std::min(g.primitives.size(), std::size_t(16)) + 4;
-}
+/// How many images a run of `g` holds at once, at most: the results alive
+/// together (each until its last reader) and the run's six temporaries.
+/// Checked against kMaxFilterBytes before any work.
+std::size_t filter_held_images(const FilterGraph& g);
 /// The most primitives in one filter (browsers have no limit; 4096 is some
 /// hundred times what real files use, and bounds the time of a hostile one).
 inline constexpr std::size_t kMaxFilterPrimitives = 4096;

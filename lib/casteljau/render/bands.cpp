@@ -91,6 +91,7 @@ RenderStats BandRenderer::render(const Scene& scene, const Affine& view, BasicCa
         if (!pool_) pool_ = std::make_unique<WorkerPool>();
         pool_->run(n, work); // the calling thread is worker 0
     }
+    for (int t = 0; t < n; ++t) renderers_[std::size_t(t)]->release_reserved();
     RenderStats total;
     for (const RenderStats& s : stats_) total += s;
     return total;

@@ -10,15 +10,18 @@
 // filter, and the CLI's default is a thread per core.
 //
 // How: a renderer reserves what its stroker's and filters' buffers grow to
-// (an estimate in bytes, kept while the buffers are) from kSharedBytes. When
-// the budget has not enough left, the thread enters the gate instead, holds
-// whatever the call takes (up to the call's own limits), and, once the
-// stroke or filter is drawn, frees those buffers, gives back its
-// reservation and leaves (Renderer::StrokeMemory, Renderer::FilterMemory).
-// So the threads together hold at most kSharedBytes plus one call's worth,
-// whatever their number; ordinary files stay within the budget and never
+// (an estimate in bytes) from kSharedBytes, and keeps the buffers and the
+// reservation to the end of the frame (Renderer::release_reserved), so an
+// idle renderer holds no share. When the budget has not enough left, the
+// thread enters the gate instead, holds whatever the call takes (up to the
+// call's own limits), and, once the stroke strip or filter chain is drawn,
+// frees those buffers and leaves (Renderer::StrokeMemory,
+// Renderer::FilterMemory). So the threads together hold at most
+// kSharedBytes plus one call's worth, whatever their number, and ordinary
+// files (strokes below 1.3 MB and chains below 4 MiB reserve nothing) never
 // wait. The pictures do not change, only the order in which the heavy
-// strokes and filters are drawn.
+// strokes and filters are drawn; a chain larger than the budget alone
+// reallocates its images for every band.
 //
 // Invariants. The gate is one process-wide mutex with a per-thread depth, so
 // a thread already through it passes again without waiting (a pattern
@@ -88,6 +91,8 @@ class Reservation {
         bytes_ = bytes;
         return true;
     }
+    /// The bytes held.
+    std::size_t bytes() const { return bytes_; }
     /// Gives everything back.
     void reset() {
         if (bytes_) unreserve(bytes_);

@@ -53,7 +53,19 @@ RenderStats Renderer::render(const Scene& scene, const Affine& view, BasicCanvas
                              const RenderOptions& options, const PixelRect& frame) {
     begin(view, options, frame);
     draw_group(scene.root, canvas);
+    release_reserved();
     return stats_;
+}
+
+void Renderer::release_reserved() {
+    if (stroker_.reserved() > 0) {
+        stroker_.release();
+        edges_.release();
+        raster_.release();
+    }
+    for (const auto& b : filter_buffers_)
+        if (b->reserved.bytes() > 0) *b = FilterBuffers();
+    if (tile_renderer_) tile_renderer_->release_reserved();
 }
 
 template <class Pixel>
@@ -445,11 +457,12 @@ PixelRect grown(const PixelRect& r, double by) {
 
 } // namespace
 
-// A filter chain's buffers reserve what it may hold from the memory budget
-// (past kUnreservedFilterBytes) before it draws anything; refused, the
-// chain runs through the gate, and once it has run frees its buffers (the
-// reservation with them) and leaves. The source layer's storage is the
-// layer budget's, split between the threads.
+// A filter chain that may hold more than kUnreservedFilterBytes reserves it
+// from the memory budget before it draws anything, and keeps its buffers
+// and the reservation to the end of the frame (release_reserved). Refused,
+// it runs through the gate, and once it has run frees its buffers and
+// leaves. The source layer's storage is the layer budget's, split between
+// the threads.
 class Renderer::FilterMemory {
   public:
     FilterMemory(FilterBuffers& b, std::size_t bytes)

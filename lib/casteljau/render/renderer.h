@@ -128,6 +128,12 @@ class Renderer {
     /// so a picture degraded by the budget may differ between thread counts.
     void set_layer_budget(std::size_t bytes) { layer_budget_ = bytes; }
 
+    /// Frees the buffers that hold a reservation from the memory budget
+    /// (memory_gate.h: strokes and filter chains past a few MB) and gives it
+    /// back, so that an idle renderer keeps no share of the budget. render()
+    /// calls it at the end of the frame, BandRenderer after all bands.
+    void release_reserved();
+
   private:
     class StrokeMemory; // draw_stroke's: the memory gate's side (renderer.cpp)
     class FilterMemory; // filter_layer's, likewise

@@ -827,6 +827,8 @@ void Stroker::set_memory_budget(bool (*reserve)(std::size_t), void (*unreserve)(
 
 void Stroker::release() { b_->release(0); }
 
+std::size_t Stroker::reserved() const { return b_->growth.reserved; }
+
 // outline() at 2^-k of the size, so that the largest magnitude is at most
 // kMaxMagnitude, then scaled back: powers of two scale doubles exactly (the
 // tolerance too stays far above the smallest normal double).

@@ -133,6 +133,10 @@ class Stroker {
     /// the reservation.
     void release();
 
+    /// The bytes reserved (0 when the buffers are below the reservation's
+    /// threshold, or no budget is set).
+    std::size_t reserved() const;
+
     /// The buffers (opaque: defined in stroker.cpp).
     struct Buffers;
 
