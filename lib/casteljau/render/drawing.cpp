@@ -203,6 +203,7 @@ RenderStats Drawing::render_region(BasicCanvas<Pixel>& canvas, const PixelRect& 
     tile.reset(r.width(), r.height(), r.x0, r.y0, background);
     const RenderStats stats = renderer_.render_nodes(crossing_, Affine::identity(), tile, options,
                                                      {0, 0, width_, height_});
+    renderer_.release_reserved(); // a redraw is a frame: an idle drawing keeps no share
     for (int y = r.y0; y < r.y1; ++y)
         std::memcpy(static_cast<void*>(canvas.row(y) + r.x0), tile.row(y - r.y0),
                     std::size_t(r.width()) * sizeof(Pixel));
