@@ -366,8 +366,13 @@ std::vector<std::size_t> last_uses(const FilterGraph& g) {
 // The run's temporaries (Results::temp): two converted inputs, a drop
 // shadow's two, SourceAlpha and a transparent image.
 constexpr std::size_t kTemporaries = 6;
-// last_uses' mark for a result already freed.
-constexpr std::size_t kFreed = std::size_t(-1);
+// Whether primitive i reads result k last, and so frees it: once, should it
+// list k twice (marked in `last`, last_uses').
+bool frees(std::vector<std::size_t>& last, int k, std::size_t i) {
+    if (k < 0 || last[std::size_t(k)] != i) return false;
+    last[std::size_t(k)] = std::size_t(-1);
+    return true;
+}
 
 bool valid(const FilterGraph& g) {
     if (g.primitives.empty() || g.primitives.size() > kMaxFilterPrimitives) return false;
@@ -382,16 +387,13 @@ bool valid(const FilterGraph& g) {
 std::size_t filter_held_images(const FilterGraph& g) {
     if (!valid(g)) return kTemporaries; // the run fails before it makes any result
     // The run's own count: a result is made, and freed after the primitive
-    // that reads it last (once, should it list the input twice).
+    // that reads it last.
     std::vector<std::size_t> last = last_uses(g);
     std::size_t live = 0, most = 0;
     for (std::size_t i = 0; i < g.primitives.size(); ++i) {
         most = std::max(most, ++live);
         for (int k : g.primitives[i].inputs)
-            if (k >= 0 && last[std::size_t(k)] == i) {
-                last[std::size_t(k)] = kFreed;
-                --live;
-            }
+            if (frees(last, k, i)) --live;
     }
     return most + kTemporaries;
 }
@@ -445,9 +447,8 @@ bool run_filter(const FilterGraph& g, const Affine& to_device, const FilterSourc
         }
         if (!axis_aligned) cut_to(step.out, step.sub, user_sub, to_user);
         for (int k : p.inputs)
-            if (k >= 0 && last[std::size_t(k)] == i) {
+            if (frees(last, k, i)) {
                 results.free(std::size_t(k));
-                last[std::size_t(k)] = kFreed; // an input listed twice is freed once
                 --live;
             }
     }

@@ -15,6 +15,29 @@ namespace casteljau {
 
 namespace {
 
+// Ends a scope that may have entered the memory gate (memory_gate.h: a
+// reservation the budget refused enters it): if it did, frees what was
+// grown through the gate and leaves, so that what threads hold outside the
+// gate stays within the budget and none stays in it past a stroke strip or
+// a filter chain. Nested scopes (a pattern tile's stroke inside a stroke's
+// paint) each leave only the level they entered.
+template <class Release>
+class LeaveGate {
+  public:
+    explicit LeaveGate(Release release) : release_(release), depth_(memory_gate::depth()) {}
+    ~LeaveGate() {
+        if (memory_gate::depth() == depth_) return;
+        release_();
+        memory_gate::leave();
+    }
+    LeaveGate(const LeaveGate&) = delete;
+    LeaveGate& operator=(const LeaveGate&) = delete;
+
+  private:
+    Release release_;
+    int depth_;
+};
+
 using Clock = std::chrono::steady_clock;
 
 // Stage times, read only when the options ask for them: the two clock reads
@@ -58,14 +81,16 @@ RenderStats Renderer::render(const Scene& scene, const Affine& view, BasicCanvas
 }
 
 void Renderer::release_reserved() {
-    if (stroker_.reserved() > 0) {
-        stroker_.release();
-        edges_.release();
-        raster_.release();
-    }
+    if (stroker_.reserved() > 0) release_stroke_buffers();
     for (const auto& b : filter_buffers_)
         if (b->reserved.bytes() > 0) *b = FilterBuffers();
     if (tile_renderer_) tile_renderer_->release_reserved();
+}
+
+void Renderer::release_stroke_buffers() {
+    stroker_.release();
+    edges_.release();
+    raster_.release();
 }
 
 template <class Pixel>
@@ -265,29 +290,6 @@ void Renderer::draw_shape(const Shape& s, Target& target, float opacity) {
     if (s.stroke && !s.stroke_first) draw_stroke(s, m, target, opacity);
 }
 
-// A stroke strip whose buffers the memory budget refused (memory_gate.h:
-// it went on through the gate) frees them once painted, its edges' and the
-// rasterizer's too, with their reservation, and leaves the gate: so what
-// threads hold outside the gate stays within the budget, and none stays in
-// it past the strip.
-class Renderer::StrokeMemory {
-  public:
-    explicit StrokeMemory(Renderer& r) : r_(r), depth_(memory_gate::depth()) {}
-    ~StrokeMemory() {
-        if (memory_gate::depth() == depth_) return;
-        r_.stroker_.release();
-        r_.edges_.release();
-        r_.raster_.release();
-        memory_gate::leave();
-    }
-    StrokeMemory(const StrokeMemory&) = delete;
-    StrokeMemory& operator=(const StrokeMemory&) = delete;
-
-  private:
-    Renderer& r_;
-    int depth_;
-};
-
 template <class Target>
 void Renderer::draw_stroke(const Shape& s, const Affine& m, Target& target, float opacity) {
     const Stroke& st = *s.stroke;
@@ -318,7 +320,9 @@ void Renderer::draw_stroke(const Shape& s, const Affine& m, Target& target, floa
     const double tolerance = options_->flatten.tolerance / m.max_scale();
     const Affine to_user = m.inverse();
     for (int y0 = top; y0 < bottom;) {
-        const StrokeMemory memory(*this);
+        // Refused by the memory budget, the strip's outline went on through
+        // the gate: its buffers are freed once it is painted.
+        const LeaveGate leave([this] { release_stroke_buffers(); });
         const int strip = frame_.y0 + (y0 - frame_.y0) / kStrokeStripRows * kStrokeStripRows;
         const int y1 = std::min(bottom, strip + kStrokeStripRows);
         const auto t = stage_start(*options_);
@@ -457,29 +461,6 @@ PixelRect grown(const PixelRect& r, double by) {
 
 } // namespace
 
-// A filter chain that may hold more than kUnreservedFilterBytes reserves it
-// from the memory budget before it draws anything, and keeps its buffers
-// and the reservation to the end of the frame (release_reserved). Refused,
-// it runs through the gate, and once it has run frees its buffers and
-// leaves. The source layer's storage is the layer budget's, split between
-// the threads.
-class Renderer::FilterMemory {
-  public:
-    FilterMemory(FilterBuffers& b, std::size_t bytes)
-        : b_(b), gated_(bytes > kUnreservedFilterBytes && !b.reserved.grow_to(bytes)) {}
-    ~FilterMemory() {
-        if (!gated_) return;
-        b_ = FilterBuffers();
-        memory_gate::leave();
-    }
-    FilterMemory(const FilterMemory&) = delete;
-    FilterMemory& operator=(const FilterMemory&) = delete;
-
-  private:
-    FilterBuffers& b_;
-    bool gated_;
-};
-
 template <class Target>
 bool Renderer::filter_layer(const Group& g, Target& layer) {
     // One window for the whole chain: the union of the filters' regions,
@@ -504,8 +485,15 @@ bool Renderer::filter_layer(const Group& g, Target& layer) {
     std::size_t images = 0; // the source, the inputs and what a run holds, at most
     for (const auto& f : g.filters)
         images = std::max(images, 3 + f->images.size() + filter_held_images(f->graph));
-    const FilterMemory memory(buf, images * std::size_t(window.width()) *
-                                       std::size_t(window.height()) * sizeof(Premul));
+    // A chain past kUnreservedFilterBytes reserves what it may hold, kept to
+    // the end of the frame (release_reserved); refused, it runs through the
+    // gate, and its buffers are freed once it has run. (The source layer's
+    // storage is the layer budget's, split between the threads.)
+    const LeaveGate leave([&buf] { buf = FilterBuffers(); });
+    if (const std::size_t bytes =
+            images * std::size_t(window.width()) * std::size_t(window.height()) * sizeof(Premul);
+        bytes > kUnreservedFilterBytes)
+        buf.reserved.grow_to(bytes);
     Target* src = acquire_layer<Target>(window.width(), window.height(), window.x0, window.y0);
     if (!src) return false;
     ++filter_depth_;

@@ -135,9 +135,9 @@ class Renderer {
     void release_reserved();
 
   private:
-    class StrokeMemory; // draw_stroke's: the memory gate's side (renderer.cpp)
-    class FilterMemory; // filter_layer's, likewise
     void begin(const Affine& view, const RenderOptions& options, const PixelRect& frame);
+    /// Frees the stroker's, the edges' and the rasterizer's buffers.
+    void release_stroke_buffers();
     template <class Target>
     void draw_children(const Group& g, Target& target);
     template <class Target>

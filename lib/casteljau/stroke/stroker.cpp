@@ -531,6 +531,7 @@ class Outline {
             last_d = samples.back().d;
             last_p = samples.back().p;
             if (left.size() + right.size() > budget) return drop();
+            // The call's points: the earlier subpaths' (what the budget lacks) and these.
             b_.growth.reached(kMaxOutlinePoints - budget + left.size() + right.size());
         }
         if (closed) {
