@@ -1,6 +1,7 @@
 #include "bench_scenes.h"
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <random>
 
@@ -27,11 +28,25 @@ Scene empty_scene() {
     return s;
 }
 
-void add_fill(Scene& s, Path p, Rgba color, FillRule rule = FillRule::NonZero) {
+Path rect(Point a, Point b) {
+    Path p;
+    p.move_to(a);
+    p.line_to({b.x, a.y});
+    p.line_to(b);
+    p.line_to({a.x, b.y});
+    p.close();
+    return p;
+}
+
+void add_painted(Scene& s, Path p, Fill fill) {
     Shape shape;
     shape.path = std::move(p);
-    shape.fill = Fill{color, nullptr, 1, rule};
+    shape.fill = std::move(fill);
     s.root.children.push_back(Node{std::move(shape)});
+}
+
+void add_fill(Scene& s, Path p, Rgba color, FillRule rule = FillRule::NonZero) {
+    add_painted(s, std::move(p), Fill{color, nullptr, 1, rule});
 }
 
 void add_stroke(Scene& s, Path p, Rgba color, double width) {
@@ -134,14 +149,65 @@ Scene glyph_shapes(unsigned seed, int n) {
 
 Scene full_canvas_rect() {
     Scene s = empty_scene();
-    Path p;
-    p.move_to({0, 0});
-    p.line_to({kSceneSize, 0});
-    p.line_to({kSceneSize, kSceneSize});
-    p.line_to({0, kSceneSize});
-    p.close();
-    add_fill(s, std::move(p), {0, 0.5f, 0.5f, 1});
+    add_fill(s, rect({0, 0}, {kSceneSize, kSceneSize}), {0, 0.5f, 0.5f, 1});
     return s;
+}
+
+Scene stretched_image(unsigned seed, bool turned) {
+    // Smooth ramps and noise, opaque: what a photograph asks of the sampler.
+    constexpr int kSide = 512;
+    Rng rng(seed);
+    auto im = std::make_shared<RasterImage>();
+    im->width = im->height = kSide;
+    for (int y = 0; y < kSide; ++y)
+        for (int x = 0; x < kSide; ++x)
+            im->pixels.push_back({float(x) / kSide, float(y) / kSide, float(rng.uniform(0, 1)), 1});
+    auto pattern = std::make_shared<Pattern>();
+    pattern->width = pattern->height = kSceneSize;
+    pattern->image = std::move(im);
+    pattern->repeat = false;
+    // Turned: grown by 20% about the centre, so that the turned image still
+    // covers the canvas.
+    const Vec2 centre{kSceneSize / 2, kSceneSize / 2};
+    if (turned)
+        pattern->transform = Affine::translate(centre) * Affine::rotate(std::numbers::pi / 18) *
+                             Affine::scale(1.2) * Affine::translate(-centre);
+    Scene s = empty_scene();
+    add_painted(s, rect({0, 0}, {kSceneSize, kSceneSize}),
+                Fill{{}, nullptr, 1, FillRule::NonZero, pattern});
+    return s;
+}
+
+Scene gradient_fill(Gradient::Kind kind) {
+    auto g = std::make_shared<Gradient>();
+    g->kind = kind;
+    g->p1 = {0, 0}, g->p2 = {1, 1};
+    g->focal = {0.3, 0.3};
+    g->stops = {{0, {1, 0, 0, 1}}, {0.5f, {0, 1, 0, 1}}, {1, {0, 0, 1, 1}}};
+    Scene s = empty_scene();
+    add_painted(s, rect({0, 0}, {kSceneSize, kSceneSize}), Fill{{}, std::move(g)});
+    return s;
+}
+
+Scene pattern_rects(unsigned seed, int n) {
+    auto tile = std::make_shared<Pattern>();
+    tile->width = tile->height = 16;
+    Scene content = empty_scene();
+    add_fill(content, rect({0, 0}, {16, 16}), {0.93f, 0.93f, 0.93f, 1});
+    Path disc;
+    ellipse(disc, {8, 8}, 5, 5, true);
+    add_fill(content, std::move(disc), {0.8f, 0.1f, 0.1f, 1});
+    Path cross;
+    cross.move_to({0, 0});
+    cross.line_to({16, 16});
+    cross.move_to({16, 0});
+    cross.line_to({0, 16});
+    add_stroke(content, std::move(cross), {0.2f, 0.2f, 0.2f, 1}, 1.5);
+    tile->content = std::move(content.root);
+    return generate(seed, n, [&](Rng& rng, Scene& s, int, Point a) {
+        const Vec2 size{rng.uniform(10, 64), rng.uniform(10, 64)};
+        add_painted(s, rect(a, a + size), Fill{{}, nullptr, 1, FillRule::NonZero, tile});
+    });
 }
 
 std::vector<NamedScene> standard_scenes() {
@@ -152,6 +218,16 @@ std::vector<NamedScene> standard_scenes() {
     v.push_back({"hairlines_10k", hairlines(3, 10000)});
     v.push_back({"glyphs_5k", glyph_shapes(4, 5000)});
     v.push_back({"full_canvas_rect", full_canvas_rect()});
+    return v;
+}
+
+std::vector<NamedScene> paint_scenes() {
+    std::vector<NamedScene> v;
+    v.push_back({"image_level", stretched_image(5, false)});
+    v.push_back({"image_turned", stretched_image(5, true)});
+    v.push_back({"linear_gradient", gradient_fill(Gradient::Kind::Linear)});
+    v.push_back({"radial_gradient", gradient_fill(Gradient::Kind::Radial)});
+    v.push_back({"pattern_2k", pattern_rects(6, 2000)});
     return v;
 }
 

@@ -32,4 +32,18 @@ Scene full_canvas_rect();
 /// 5k glyph shapes and the full-canvas rectangle.
 std::vector<NamedScene> standard_scenes();
 
+/// A seeded 512 x 512 image stretched over the canvas, level or turned by
+/// 10 degrees about its centre (and grown to cover the canvas).
+Scene stretched_image(unsigned seed, bool turned);
+/// The canvas filled with a gradient of three opaque stops: linear along the
+/// diagonal, or radial with its focal point off the centre.
+Scene gradient_fill(Gradient::Kind kind);
+/// `n` rectangles 10 to 64 px across, filled with one 16 px pattern tile (a
+/// square, a disc and a stroked cross), in user space.
+Scene pattern_rects(unsigned seed, int n);
+
+/// Shaded paints, by rows (paint/image_shader.h, paint/gradient.h): the
+/// stretched images, the two gradients and 2k pattern-filled rectangles.
+std::vector<NamedScene> paint_scenes();
+
 } // namespace casteljau::bench

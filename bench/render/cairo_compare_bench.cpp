@@ -12,7 +12,8 @@
 // 1/255: a check that both drew the same thing at comparable quality.
 //
 // Usage: cairo_compare_bench [benchmark flags] [SCENE.svg ...]
-// The seeded scenes of bench_scenes.h always run; each SVG argument is added,
+// The seeded scenes of bench_scenes.h (the and the shaded paints')
+// always run; each SVG argument is added,
 // scaled so that its longer side is 1024 px (the tiger at 1024 px).
 #include "bench_scenes.h"
 #include "cairo_scene.h"
@@ -119,6 +120,8 @@ int main(int argc, char** argv) {
     using namespace casteljau;
     benchmark::Initialize(&argc, argv);
     for (auto& s : bench::standard_scenes())
+        bench::register_scene(s.name, std::make_shared<const Scene>(std::move(s.scene)));
+    for (auto& s : bench::paint_scenes())
         bench::register_scene(s.name, std::make_shared<const Scene>(std::move(s.scene)));
     for (int i = 1; i < argc; ++i) {
         SvgResult r = read_svg_file(argv[i]);

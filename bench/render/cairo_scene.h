@@ -4,9 +4,13 @@
 //
 // Differences, which the closing figures state: Cairo has no conics, so each
 // conic is issued as two cubics (the half-arc approximation of
-// edit/bezier_spline.h, within 4e-6 of a quarter circle's radius); gradients
-// are drawn in their first stop's color; Cairo composites into 8-bit
-// premultiplied ARGB32, where Casteljau composites in float.
+// edit/bezier_spline.h, within 4e-6 of a quarter circle's radius); Cairo
+// composites into 8-bit premultiplied ARGB32, where Casteljau composites in
+// float. Gradients, images and pattern tiles are Cairo patterns: an image
+// is converted to an ARGB32 surface once and kept (an application would
+// decode it once), a pattern's tile drawn by Cairo each time it is used, at
+// the device resolution, as Casteljau draws it. Clips, masks, filters and
+// blend modes are left out.
 #pragma once
 
 #include "casteljau/scene/scene.h"

@@ -284,6 +284,8 @@ int main(int argc, char** argv) {
     benchmark::Initialize(&argc, argv);
     for (bench::NamedScene& s : bench::standard_scenes())
         register_frames(s.name, std::make_shared<const Scene>(std::move(s.scene)), 1.0);
+    for (bench::NamedScene& s : bench::paint_scenes())
+        register_frames(s.name, std::make_shared<const Scene>(std::move(s.scene)), 1.0);
     // Each SVG argument scaled so that its longer side is 1024 px, as in
     // cairo_compare_bench (the tiger at 1024 px).
     for (int i = 1; i < argc; ++i) {

@@ -7,7 +7,9 @@
 #include "casteljau/svg/reader.h"
 #include "corpus.h"
 
+#include <cmath>
 #include <gtest/gtest.h>
+#include <vector>
 
 namespace casteljau {
 namespace {
@@ -104,6 +106,31 @@ Canvas render(const std::string& svg, std::vector<SvgDiagnostic>* warnings = nul
     Canvas c(int(doc.scene->width), int(doc.scene->height));
     Renderer().render(*doc.scene, Affine::identity(), c, {});
     return c;
+}
+
+TEST(Gradient, RowsShadeTheTableEntryNearestEachPixelsParameter) {
+    // Black to white, opaque: table entry k is the gray k / (kGradientLut - 1),
+    // so each shaded pixel tells which entry it took.
+    testing::Rng rng(17);
+    for (int trial = 0; trial < 60; ++trial) {
+        const auto kind = trial % 2 ? Gradient::Kind::Radial : Gradient::Kind::Linear;
+        Gradient g = two_stops(kind, Spread(trial / 2 % 3));
+        g.p1 = rng.point(200), g.p2 = rng.point(200);
+        g.center = rng.point(200), g.radius = rng.uniform(5, 150);
+        g.focal = g.center + Vec2{rng.uniform(-1, 1), rng.uniform(-1, 1)} * (0.5 * g.radius);
+        const Affine m = Affine::rotate(rng.uniform(0, 6.28)) * Affine::scale(rng.uniform(0.3, 3));
+        GradientShader sh;
+        ASSERT_TRUE(sh.prepare(g, trial % 3 ? Affine::identity() : m, 1));
+        const int x = rng.integer(-100, 200), y = rng.integer(-100, 200), n = rng.integer(1, 300);
+        std::vector<Premul> row(std::size_t(n), Premul{});
+        sh.shade(x, y, n, row.data());
+        for (int i = 0; i < n; ++i) {
+            const double t = sh.parameter({x + i + 0.5, y + 0.5});
+            const double entry = std::round(t * (kGradientLut - 1));
+            EXPECT_NEAR(row[std::size_t(i)].r * (kGradientLut - 1), entry, 1e-3)
+                << "trial " << trial << ", pixel (" << x + i << ", " << y << "), t " << t;
+        }
+    }
 }
 
 TEST(SvgGradient, BoundingBoxAndUserSpaceUnits) {

@@ -1,10 +1,13 @@
 // Image shading: exact pixels at pixel centres, nearest against bilinear
 // under scaling, tiling and edge extension, opacity, a rotated map against a
-// direct computation, coordinates far outside the double range of sense, and
-// span painting equal to at() pixel by pixel.
+// direct computation, rows shaded at once against the same, coordinates far
+// outside the double range of sense, and span painting equal to at() pixel
+// by pixel.
 #include "casteljau/paint/canvas.h"
 #include "casteljau/paint/image_shader.h"
+#include "corpus.h"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <gtest/gtest.h>
@@ -191,18 +194,23 @@ TEST(ImageShader, OpacityScalesEveryChannel) {
     }
 }
 
-/// Bilinear or nearest sampling, padded, computed directly from the formulas.
-Premul reference(const RasterImage& im, double px, double py, bool smooth) {
-    if (!smooth) {
-        const int i = std::clamp(int(std::floor(px)), 0, im.width - 1);
-        const int j = std::clamp(int(std::floor(py)), 0, im.height - 1);
-        return im.at(i, j);
-    }
-    const double u = std::clamp(px - 0.5, 0.0, im.width - 1.0);
-    const double v = std::clamp(py - 0.5, 0.0, im.height - 1.0);
-    const int i = int(u), j = int(v);
-    const int i1 = std::min(i + 1, im.width - 1), j1 = std::min(j + 1, im.height - 1);
-    return mix(mix(im.at(i, j), im.at(i1, j), u - i), mix(im.at(i, j1), im.at(i1, j1), u - i),
+/// Index k of a row or column of n pixels, padded or tiled.
+int index_of(int k, int n, bool repeat) {
+    return repeat ? ((k % n) + n) % n : std::clamp(k, 0, n - 1);
+}
+
+/// Bilinear or nearest sampling, padded or tiled, computed directly from the
+/// formulas.
+Premul reference(const RasterImage& im, double px, double py, bool smooth, bool repeat = false) {
+    const auto at = [&](int i, int j) {
+        return im.at(index_of(i, im.width, repeat), index_of(j, im.height, repeat));
+    };
+    if (!smooth) return at(int(std::floor(px)), int(std::floor(py)));
+    // Pad: the point clamped between the first and last pixel centres.
+    const double u = repeat ? px - 0.5 : std::clamp(px - 0.5, 0.0, im.width - 1.0);
+    const double v = repeat ? py - 0.5 : std::clamp(py - 0.5, 0.0, im.height - 1.0);
+    const int i = int(std::floor(u)), j = int(std::floor(v));
+    return mix(mix(at(i, j), at(i + 1, j), u - i), mix(at(i, j + 1), at(i + 1, j + 1), u - i),
                v - j);
 }
 
@@ -229,6 +237,43 @@ TEST(ImageShader, RotatedMapMatchesADirectComputation) {
                             (smooth ? "bilinear " : "nearest ") + where(x, y));
             }
     }
+}
+
+TEST(ImageShader, RowsShadeAsTheFormulasSay) {
+    // Maps that keep rows level (scale, flip, translation: p.y computed once
+    // a row) and one that does not, in every mode, on rows longer than the
+    // span painter's chunk and rows of one pixel.
+    const RasterImage im = random_image(9, 7, 11);
+    const Affine maps[] = {
+        Affine::translate({3.3, -2.1}) * Affine::scale(2.7, 1.9),
+        Affine::translate({40.5, 30.25}) * Affine::scale(-1.5, -3.25),
+        Affine::translate({1, 2}) * Affine::scale(0.37),
+        Affine::translate({5, 5}) * Affine::rotate(0.7) * Affine::scale(2.2),
+    };
+    testing::Rng rng(23);
+    for (const Affine& m : maps)
+        for (const auto& [smooth, repeat] : kModes) {
+            ImageShader sh;
+            ASSERT_TRUE(sh.prepare(im, m, 1, smooth, repeat));
+            const Affine inv = m.inverse();
+            for (const int n : {1, 2, 63, 64, 65, 200}) {
+                const int x = rng.integer(-60, 60), y = rng.integer(-60, 60);
+                std::vector<Premul> row(static_cast<std::size_t>(n));
+                sh.shade(x, y, n, row.data());
+                for (int i = 0; i < n; ++i) {
+                    const Point p = inv * Point{x + i + 0.5, y + 0.5};
+                    // Nearest: a point within rounding of a pixel edge may go either way.
+                    const double edge = 1e-9;
+                    if (!smooth && (std::fabs(p.x - std::round(p.x)) < edge ||
+                                    std::fabs(p.y - std::round(p.y)) < edge))
+                        continue;
+                    expect_near(row[std::size_t(i)], reference(im, p.x, p.y, smooth, repeat),
+                                smooth ? 1e-5f : 0,
+                                (smooth ? "bilinear" : "nearest") +
+                                    std::string(repeat ? ", repeat " : ", pad ") + where(x + i, y));
+                }
+            }
+        }
 }
 
 bool in_unit_range(const Premul& p) {

@@ -204,8 +204,9 @@ class SolidSpanPainter final : public SpanSink {
 };
 
 /// Adapts the span interface to shaded compositing: each pixel's color comes
-/// from `shader.at(x, y)`, the shader's color at the centre of device pixel
-/// (x, y) (GradientShader, ImageShader).
+/// from the shader, `shader.shade(x, y, n, out)` giving the colors at the
+/// centres of n device pixels of a row (GradientShader, ImageShader), a
+/// chunk of the span at a time.
 template <class Pixel, class Shader>
 class ShadedSpanPainter final : public SpanSink {
   public:
@@ -214,12 +215,20 @@ class ShadedSpanPainter final : public SpanSink {
     /// Source-over of the shaded pixels through the span's coverage.
     void span(const Span& s) override {
         Pixel* d = canvas_.row(s.y - canvas_.origin_y()) + (s.x - canvas_.origin_x());
-        for (int i = 0; i < s.len; ++i) blend_over(d[i], shader_.at(s.x + i, s.y), s.at(i));
+        for (int i = 0; i < s.len; i += kChunk) {
+            const int n = std::min(kChunk, s.len - i);
+            shader_.shade(s.x + i, s.y, n, colors_);
+            for (int k = 0; k < n; ++k) blend_over(d[i + k], colors_[k], s.at(i + k));
+        }
     }
 
   private:
+    /// Pixels shaded a call: 1 KiB of colors, which stay in the L1 cache
+    /// until they are blended.
+    static constexpr int kChunk = 64;
     BasicCanvas<Pixel>& canvas_;
     const Shader& shader_;
+    Premul colors_[kChunk];
 };
 
 /// Gradient compositing.

@@ -1,5 +1,7 @@
 #include "casteljau/paint/gradient.h"
 
+#include "casteljau/geom/pixel_index.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -19,18 +21,36 @@ Premul lerp(Premul a, Premul b, float t) {
             a.a + (b.a - a.a) * t};
 }
 
-double spread(double t, Spread s) {
+[[gnu::always_inline]] inline double spread(double t, Spread s) {
     switch (s) {
     case Spread::Pad:
         return std::clamp(t, 0.0, 1.0);
     case Spread::Repeat:
-        return t - std::floor(t);
+        return t - floor_whole(t);
     case Spread::Reflect: {
-        const double m = t - 2.0 * std::floor(t * 0.5); // [0, 2)
+        const double m = t - 2.0 * floor_whole(t * 0.5); // [0, 2)
         return m > 1.0 ? 2.0 - m : m;
     }
     }
     return t;
+}
+
+/// The parameter after spread at gradient-space point q; inlined by force
+/// into the loop of shade(), as it runs once a pixel.
+[[gnu::always_inline]] inline double parameter_at(const Gradient& g, Point focal, Point q) {
+    double t;
+    if (g.kind == Gradient::Kind::Linear) {
+        const Vec2 axis = g.p2 - g.p1;
+        const double len_sq = axis.length_sq();
+        t = len_sq > 0 ? (q - g.p1).dot(axis) / len_sq : 1.0; // coincident points: the last stop
+    } else {
+        const Vec2 d = q - focal, e = g.center - focal;
+        const double a = e.length_sq() - g.radius * g.radius; // < 0: focal inside
+        const double de = d.dot(e);
+        if (g.radius <= 0) return 1.0; // zero radius: the last stop (13.2.3)
+        t = (de - std::sqrt(std::max(0.0, de * de - a * d.length_sq()))) / a;
+    }
+    return spread(t, g.spread);
 }
 
 } // namespace
@@ -91,30 +111,27 @@ void GradientShader::build_table(const Gradient& g, float opacity, bool linear_l
     }
 }
 
-double GradientShader::parameter(Point p) const {
-    const Point q = inverse_ * p;
-    double t;
-    if (g_->kind == Gradient::Kind::Linear) {
-        const Vec2 axis = g_->p2 - g_->p1;
-        const double len_sq = axis.length_sq();
-        t = len_sq > 0 ? (q - g_->p1).dot(axis) / len_sq : 1.0; // coincident points: the last stop
-    } else {
-        const Vec2 d = q - focal_, e = g_->center - focal_;
-        const double a = e.length_sq() - g_->radius * g_->radius; // < 0: focal inside
-        const double de = d.dot(e);
-        if (g_->radius <= 0) return 1.0; // zero radius: the last stop (13.2.3)
-        t = (de - std::sqrt(std::max(0.0, de * de - a * d.length_sq()))) / a;
-    }
-    return spread(t, g_->spread);
-}
+double GradientShader::parameter(Point p) const { return parameter_at(*g_, focal_, inverse_ * p); }
 
 Premul GradientShader::at(int x, int y) const {
-    // t is in [0, 1] after spread(), or NaN where the geometry overflows the
-    // double range (end points 1e308 apart, found by fuzz_svg_render): then
-    // the first stop, never an index outside the table.
-    const double t = parameter({x + 0.5, y + 0.5});
-    const double u = t >= 0 ? std::min(t, 1.0) : 0.0;
-    return lut_[std::size_t(std::lround(u * (kGradientLut - 1)))];
+    Premul c;
+    shade(x, y, 1, &c);
+    return c;
+}
+
+void GradientShader::shade(int x, int y, int n, Premul* out) const {
+    const Gradient& g = *g_;
+    const double cy = y + 0.5;
+    for (int i = 0; i < n; ++i) {
+        // t is in [0, 1] after spread(), or NaN where the geometry overflows
+        // the double range (end points 1e308 apart, found by fuzz_svg_render):
+        // then the first stop, never an index outside the table.
+        const double t = parameter_at(g, focal_, inverse_ * Point{x + i + 0.5, cy});
+        const double v = (t >= 0 ? std::min(t, 1.0) : 0.0) * (kGradientLut - 1);
+        // std::lround(v) for v >= 0, without its library call: v - k is exact.
+        const int k = int(v);
+        out[i] = lut_[std::size_t(k + (v - k >= 0.5))];
+    }
 }
 
 } // namespace casteljau

@@ -67,6 +67,8 @@ class GradientShader {
                  bool linear_light = false);
     /// The premultiplied color at the centre of device pixel (x, y).
     Premul at(int x, int y) const;
+    /// at(x + i, y) into out[i] for i in [0, n): the same values, a row at a time.
+    void shade(int x, int y, int n, Premul* out) const;
     /// The gradient parameter after spread, in [0, 1], at device point p.
     double parameter(Point p) const;
 

@@ -1,8 +1,9 @@
 #include "casteljau/paint/image_shader.h"
 
+#include "casteljau/geom/pixel_index.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 
 namespace casteljau {
 
@@ -13,20 +14,11 @@ namespace {
 /// anyway. Compared in double, so no out-of-range value meets int.
 int clamp_index(double v, int n) { return v >= 0 ? (v < n ? int(v) : n - 1) : 0; }
 
-/// floor(x), inline: baseline x86-64 has no rounding instruction (SSE4.1
-/// brings one), so std::floor is a libm call, twice per repeated sample.
-/// Beyond 2^52 every double is whole; NaN and infinities pass through.
-double floor_of(double x) {
-    if (!(std::fabs(x) < 0x1p52)) return x;
-    const double t = double(std::int64_t(x));
-    return t > x ? t - 1 : t;
-}
-
 /// v reduced to [0, n] by floor-mod, with the reciprocal 1 / n: the quotient
 /// may round to the neighbouring integer, which one step corrects. The
 /// bound n itself (rounding again) and NaN are left to clamp_index.
-double wrap(double v, int n, double inv_n) {
-    double r = v - n * floor_of(v * inv_n);
+[[gnu::always_inline]] inline double wrap(double v, int n, double inv_n) {
+    double r = v - n * floor_whole(v * inv_n);
     if (r < 0) r += n;
     if (r >= n) r -= n;
     return r;
@@ -39,7 +31,7 @@ struct Axis {
     float t;
 };
 
-Axis bilinear_axis(double v, int n, double inv_n, bool repeat) {
+[[gnu::always_inline]] inline Axis bilinear_axis(double v, int n, double inv_n, bool repeat) {
     double u = v - 0.5; // pixel centres at integers
     u = repeat ? wrap(u, n, inv_n) : (u >= 0 ? std::min(u, n - 1.0) : 0.0);
     const int i = clamp_index(u, n);
@@ -74,20 +66,41 @@ bool ImageShader::prepare(const RasterImage& image, const Affine& to_device, flo
 }
 
 Premul ImageShader::at(int x, int y) const {
-    const RasterImage& im = *image_;
-    const Point p = inverse_ * Point{x + 0.5, y + 0.5};
     Premul c;
+    shade(x, y, 1, &c);
+    return c;
+}
+
+void ImageShader::shade(int x, int y, int n, Premul* out) const {
+    const RasterImage& im = *image_;
+    const Affine& m = inverse_;
+    const double cy = y + 0.5;
+    const Premul* px = im.pixels.data();
+    const auto pixel = [&](int i, int j) { return px[std::size_t(j) * std::size_t(im.width) + i]; };
+    const auto scaled = [&](const Premul& c) {
+        return Premul{c.r * opacity_, c.g * opacity_, c.b * opacity_, c.a * opacity_};
+    };
+    // b == 0: p.y = b (x + 0.5) + d cy + f is the same for every x (b x is
+    // +-0, and adding a zero changes no value but a zero's sign, which no
+    // sample below tells apart).
+    const bool level = m.b == 0;
     if (smooth_) {
-        const Axis ax = bilinear_axis(p.x, im.width, inv_w_, repeat_);
-        const Axis ay = bilinear_axis(p.y, im.height, inv_h_, repeat_);
-        c = lerp(lerp(im.at(ax.i0, ay.i0), im.at(ax.i1, ay.i0), ax.t),
-                 lerp(im.at(ax.i0, ay.i1), im.at(ax.i1, ay.i1), ax.t), ay.t);
+        const Axis row_axis = bilinear_axis(m.d * cy + m.f, im.height, inv_h_, repeat_);
+        for (int i = 0; i < n; ++i) {
+            const Point p = m * Point{x + i + 0.5, cy};
+            const Axis ax = bilinear_axis(p.x, im.width, inv_w_, repeat_);
+            const Axis ay = level ? row_axis : bilinear_axis(p.y, im.height, inv_h_, repeat_);
+            out[i] = scaled(lerp(lerp(pixel(ax.i0, ay.i0), pixel(ax.i1, ay.i0), ax.t),
+                                 lerp(pixel(ax.i0, ay.i1), pixel(ax.i1, ay.i1), ax.t), ay.t));
+        }
     } else {
-        const double u = repeat_ ? wrap(p.x, im.width, inv_w_) : p.x;
-        const double v = repeat_ ? wrap(p.y, im.height, inv_h_) : p.y;
-        c = im.at(clamp_index(u, im.width), clamp_index(v, im.height));
+        for (int i = 0; i < n; ++i) {
+            const Point p = m * Point{x + i + 0.5, cy};
+            const double u = repeat_ ? wrap(p.x, im.width, inv_w_) : p.x;
+            const double v = repeat_ ? wrap(p.y, im.height, inv_h_) : p.y;
+            out[i] = scaled(pixel(clamp_index(u, im.width), clamp_index(v, im.height)));
+        }
     }
-    return {c.r * opacity_, c.g * opacity_, c.b * opacity_, c.a * opacity_};
 }
 
 } // namespace casteljau

@@ -16,6 +16,12 @@
 // the alternative, extends the edge pixels (the point is clamped between the
 // first and last pixel centres). Coordinates are reduced in double before
 // they become indices, so huge or NaN coordinates still give a valid pixel.
+//
+// Shading is by rows (shade): a span's pixels in one call, each sampled at
+// its own centre as above (never a point stepped along the row, which,
+// rounded differently, could land on the other side of a pixel edge). Where
+// the map does not rotate or skew, p.y is the same along the row, and so is
+// the vertical half of the bilinear sample: computed once a row.
 #pragma once
 
 #include "casteljau/geom/affine.h"
@@ -38,6 +44,8 @@ class ImageShader {
                  bool repeat);
     /// The premultiplied color at the centre of device pixel (x, y), times the opacity.
     Premul at(int x, int y) const;
+    /// at(x + i, y) into out[i] for i in [0, n): the same values, a row at a time.
+    void shade(int x, int y, int n, Premul* out) const;
 
   private:
     const RasterImage* image_ = nullptr;
@@ -47,9 +55,7 @@ class ImageShader {
     bool smooth_ = true, repeat_ = false;
 };
 
-/// Image compositing. Each pixel from at() itself, not from a point stepped
-/// along the row: the same value to the bit, where a stepped point, rounded
-/// differently, could land on the other side of a pixel edge.
+/// Image compositing.
 template <class Pixel>
 using ImageSpanPainter = ShadedSpanPainter<Pixel, ImageShader>;
 
