@@ -241,14 +241,18 @@ TEST(ImageShader, RotatedMapMatchesADirectComputation) {
 
 TEST(ImageShader, RowsShadeAsTheFormulasSay) {
     // Maps that keep rows level (scale, flip, translation: p.y computed once
-    // a row) and one that does not, in every mode, on rows longer than the
-    // span painter's chunk and rows of one pixel.
+    // a row), translations by whole pixels (copied) and a map that does not
+    // keep rows level, in every mode, on rows longer than the span painter's
+    // chunk and rows of one pixel.
     const RasterImage im = random_image(9, 7, 11);
     const Affine maps[] = {
         Affine::translate({3.3, -2.1}) * Affine::scale(2.7, 1.9),
         Affine::translate({40.5, 30.25}) * Affine::scale(-1.5, -3.25),
         Affine::translate({1, 2}) * Affine::scale(0.37),
         Affine::translate({5, 5}) * Affine::rotate(0.7) * Affine::scale(2.2),
+        Affine::identity(),
+        Affine::translate({-3, 5}),
+        Affine::translate({1e6, -7}),
     };
     testing::Rng rng(23);
     for (const Affine& m : maps)

@@ -62,6 +62,13 @@ bool ImageShader::prepare(const RasterImage& image, const Affine& to_device, flo
     opacity_ = opacity;
     smooth_ = smooth;
     repeat_ = repeat;
+    // 2^40: far past any image side and frame coordinate, and below 2^52,
+    // where every double is whole: x + shift stays exact in long long.
+    const auto whole = [](double v) { return std::fabs(v) < 0x1p40 && v == floor_whole(v); };
+    aligned_ = inverse.a == 1 && inverse.b == 0 && inverse.c == 0 && inverse.d == 1 &&
+               whole(inverse.e) && whole(inverse.f);
+    shift_x_ = aligned_ ? static_cast<long long>(inverse.e) : 0;
+    shift_y_ = aligned_ ? static_cast<long long>(inverse.f) : 0;
     return true;
 }
 
@@ -80,6 +87,25 @@ void ImageShader::shade(int x, int y, int n, Premul* out) const {
     const auto scaled = [&](const Premul& c) {
         return Premul{c.r * opacity_, c.g * opacity_, c.b * opacity_, c.a * opacity_};
     };
+    if (aligned_) {
+        // The index of column or row k: tiled by floor-mod, or padded.
+        const auto index = [&](long long k, int size) {
+            return int(repeat_ ? (k % size + size) % size : std::clamp<long long>(k, 0, size - 1));
+        };
+        const Premul* row =
+            px + std::size_t(index(y + shift_y_, im.height)) * std::size_t(im.width);
+        const long long first = x + shift_x_;
+        if (repeat_) {
+            int i = index(first, im.width);
+            for (int k = 0; k < n; ++k) {
+                out[k] = scaled(row[i]);
+                if (++i == im.width) i = 0;
+            }
+        } else {
+            for (int k = 0; k < n; ++k) out[k] = scaled(row[index(first + k, im.width)]);
+        }
+        return;
+    }
     // b == 0: p.y = b (x + 0.5) + d cy + f is the same for every x (b x is
     // +-0, and adding a zero changes no value but a zero's sign, which no
     // sample below tells apart).

@@ -21,7 +21,12 @@
 // its own centre as above (never a point stepped along the row, which,
 // rounded differently, could land on the other side of a pixel edge). Where
 // the map does not rotate or skew, p.y is the same along the row, and so is
-// the vertical half of the bilinear sample: computed once a row.
+// the vertical half of the bilinear sample: computed once a row. Where the
+// map is a translation by whole pixels (an image drawn at its own size on
+// the pixel grid; a pattern tile drawn at the device resolution, whose side
+// is a whole number of pixels), every pixel centre lands on an image pixel
+// centre: both samplings give that pixel exactly (bilinear weights are 0),
+// and it is copied.
 #pragma once
 
 #include "casteljau/geom/affine.h"
@@ -53,6 +58,8 @@ class ImageShader {
     double inv_w_ = 1, inv_h_ = 1; // 1 / width, 1 / height: wrapping multiplies
     float opacity_ = 1;
     bool smooth_ = true, repeat_ = false;
+    bool aligned_ = false; // inverse_ translates by whole pixels: (shift_x_, shift_y_)
+    long long shift_x_ = 0, shift_y_ = 0;
 };
 
 /// Image compositing.
