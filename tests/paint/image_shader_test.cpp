@@ -76,15 +76,32 @@ TEST(ImageShader, RefusesEmptyImagesAndSingularMaps) {
 }
 
 TEST(ImageShader, IdentityGivesExactPixelsAtCentres) {
+    // The identity is copied (a translation by whole pixels); mirrors and the
+    // half turn are sampled, their pixel centres landing on the image's: both
+    // give each pixel exactly.
     const RasterImage im = random_image(5, 4, 2);
-    for (const auto& [smooth, repeat] : kModes) {
-        ImageShader sh;
-        ASSERT_TRUE(sh.prepare(im, Affine::identity(), 1, smooth, repeat));
-        for (int y = 0; y < im.height; ++y)
-            for (int x = 0; x < im.width; ++x)
-                EXPECT_TRUE(same(sh.at(x, y), im.at(x, y)))
-                    << smooth << repeat << " (" << x << ", " << y << ") " << str(sh.at(x, y));
-    }
+    const int w = im.width, h = im.height;
+    struct Map {
+        Affine to_device;
+        bool flip_x, flip_y;
+    };
+    const Map maps[] = {
+        {Affine::identity(), false, false},
+        {Affine::translate({double(w), 0}) * Affine::scale(-1, 1), true, false},
+        {Affine::translate({0, double(h)}) * Affine::scale(1, -1), false, true},
+        {Affine::translate({double(w), double(h)}) * Affine::scale(-1, -1), true, true}};
+    for (const Map& m : maps)
+        for (const auto& [smooth, repeat] : kModes) {
+            ImageShader sh;
+            ASSERT_TRUE(sh.prepare(im, m.to_device, 1, smooth, repeat));
+            for (int y = 0; y < h; ++y)
+                for (int x = 0; x < w; ++x) {
+                    const Premul want = im.at(m.flip_x ? w - 1 - x : x, m.flip_y ? h - 1 - y : y);
+                    EXPECT_TRUE(same(sh.at(x, y), want))
+                        << smooth << repeat << m.flip_x << m.flip_y << " (" << x << ", " << y
+                        << ") " << str(sh.at(x, y));
+                }
+        }
 }
 
 TEST(ImageShader, NearestAndBilinearOnATwoByTwoImageScaledByFour) {

@@ -11,7 +11,7 @@ namespace casteljau {
 /// floor(x) without a library call: baseline x86-64 has no rounding
 /// instruction (SSE4.1 brings one), so std::floor is a call into libm, in
 /// loops run once a pixel. Beyond 2^52 every double is whole; NaN and the
-/// infinities pass through.
+/// infinities pass through. Unlike std::floor, -0 gives +0.
 inline double floor_whole(double x) {
     if (!(std::fabs(x) < 0x1p52)) return x;
     const double t = double(static_cast<long long>(x));

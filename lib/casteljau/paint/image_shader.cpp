@@ -111,7 +111,9 @@ void ImageShader::shade(int x, int y, int n, Premul* out) const {
     // sample below tells apart).
     const bool level = m.b == 0;
     if (smooth_) {
-        const Axis row_axis = bilinear_axis(m.d * cy + m.f, im.height, inv_h_, repeat_);
+        // The same expression as each pixel's p.y (not d cy + f), so that a
+        // build that fuses multiply-adds rounds it the same way.
+        const Axis row_axis = bilinear_axis((m * Point{x + 0.5, cy}).y, im.height, inv_h_, repeat_);
         for (int i = 0; i < n; ++i) {
             const Point p = m * Point{x + i + 0.5, cy};
             const Axis ax = bilinear_axis(p.x, im.width, inv_w_, repeat_);
