@@ -120,7 +120,7 @@ void Renderer::begin(const Affine& view, const RenderOptions& options, const Pix
     frame_ = frame;
     options_ = &options;
     stats_ = {};
-    tile_of_ = nullptr; // a new scene may hold another pattern at the same address
+    tiles_.clear(); // a new scene may hold other patterns at the same addresses
     layers_used_ = {};
     layer_bytes_ = 0;
     layer_sizes_.clear();
@@ -413,7 +413,8 @@ bool Renderer::prepare_pattern(const Pattern& p, const Affine& m, float opacity)
     // map), rounded up, at least one, and fewer where that is over
     // kMaxTilePixels. A tile of a fraction of a pixel is thus drawn into
     // one pixel, whose exact-area coverage makes it the tile's mean color.
-    if (tile_of_ != &p || !(tile_map_ == to_device)) {
+    const RasterImage* tile = tiles_.find(&p, to_device);
+    if (!tile) {
         const double sx = std::hypot(to_device.a, to_device.b) * p.width;
         const double sy = std::hypot(to_device.c, to_device.d) * p.height;
         if (!(sx > 0 && sy > 0) || !std::isfinite(sx * sy)) return false;
@@ -427,16 +428,13 @@ bool Renderer::prepare_pattern(const Pattern& p, const Affine& m, float opacity)
         tile_renderer_->begin(Affine::scale(w / p.width, h / p.height), *options_, {0, 0, w, h});
         tile_renderer_->draw_group(p.content, tile_canvas_);
         stats_ += tile_renderer_->stats_;
-        tile_.width = w;
-        tile_.height = h;
-        tile_.pixels.resize(std::size_t(w) * std::size_t(h));
+        RasterImage& drawn = tiles_.insert(&p, to_device, w, h);
         for (int y = 0; y < h; ++y)
-            std::copy_n(tile_canvas_.row(y), w, tile_.pixels.begin() + std::ptrdiff_t(y) * w);
-        tile_of_ = &p;
-        tile_map_ = to_device;
+            std::copy_n(tile_canvas_.row(y), w, drawn.pixels.begin() + std::ptrdiff_t(y) * w);
+        tile = &drawn;
     }
     return image_shader_.prepare(
-        tile_, to_device * Affine::scale(p.width / tile_.width, p.height / tile_.height), opacity,
+        *tile, to_device * Affine::scale(p.width / tile->width, p.height / tile->height), opacity,
         p.smooth, p.repeat);
 }
 

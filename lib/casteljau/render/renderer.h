@@ -19,7 +19,8 @@
 // allows is drawn straight onto what is under it, its opacity and blend
 // mode left out, or not at all when it is clipped or masked (a degraded
 // picture, not an unbounded one, and never one that shows what a clip hides). Pattern tiles are at
-// most kMaxTilePixels each, one per pattern nesting level.
+// most kMaxTilePixels each, and a renderer keeps at most kMaxTilePixels of them
+// (tile_cache.h), one renderer per pattern nesting level.
 #pragma once
 
 #include "casteljau/filter/filter_image.h"
@@ -30,6 +31,7 @@
 #include "casteljau/raster/edge.h"
 #include "casteljau/raster/rasterizer.h"
 #include "casteljau/render/memory_gate.h"
+#include "casteljau/render/tile_cache.h"
 #include "casteljau/scene/scene.h"
 #include "casteljau/stroke/stroker.h"
 
@@ -193,14 +195,11 @@ class Renderer {
     std::size_t layer_budget_ = kMaxLayerBytes;
     std::vector<std::size_t> layer_sizes_; ///< each one's, a stack
     ImageShader image_shader_;             ///< images and pattern tiles
-    /// A pattern's tile: drawn by a renderer of its own, kept while the
-    /// same pattern is painted under the same map (the strips of a stroke,
-    /// the shapes of a band).
+    /// Patterns' tiles: drawn by a renderer of their own, kept for the
+    /// frame under their pattern and map (tile_cache.h).
     std::unique_ptr<Renderer> tile_renderer_;
     Canvas tile_canvas_;
-    RasterImage tile_;
-    const Pattern* tile_of_ = nullptr;
-    Affine tile_map_;
+    TileCache tiles_{kMaxTilePixels};
     /// A filtered group's layer in float, and its feImage, FillPaint and
     /// StrokePaint drawings: one set per level of filters within filters.
     struct FilterBuffers {
