@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <mutex>
+#include <pthread.h>
 
 namespace casteljau::memory_gate {
 
@@ -9,6 +10,17 @@ namespace {
 std::mutex gate;
 std::atomic<std::size_t> reserved{0}, shared{kSharedBytes};
 thread_local int levels = 0;
+
+// Around fork(): the forking thread takes the gate (unless it is through it
+// already), so that no other thread holds it at the fork; parent and child
+// then release it.
+void before_fork() {
+    if (levels == 0) gate.lock();
+}
+void after_fork() {
+    if (levels == 0) gate.unlock();
+}
+[[maybe_unused]] const int fork_handlers = pthread_atfork(before_fork, after_fork, after_fork);
 } // namespace
 
 void set_budget(std::size_t bytes) { shared.store(bytes, std::memory_order_relaxed); }

@@ -27,8 +27,11 @@
 // tile's stroke drawn while the stroke it paints holds it). No thread waits
 // on another while through it: it is left before the renderer returns from
 // the stroke or filter, so neither a band's pool nor a batch's workers can
-// deadlock on it. Not fork-safe: a child forked while another thread is
-// through the gate would wait forever at its first heavy stroke.
+// deadlock on it. Fork: fork() waits until no other thread is through the
+// gate (a pthread_atfork handler takes it), so a child never inherits a
+// gate held by a thread it does not have. Reservations other threads held
+// at the fork stay counted in the child, which then goes through the gate
+// sooner: slower there, never unbounded.
 #pragma once
 
 #include <cstddef>
