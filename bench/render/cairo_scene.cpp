@@ -40,7 +40,9 @@ void add_path(cairo_t* cr, const Path& path) {
 }
 
 /// An application's own copy of an image, made once: ARGB32 (premultiplied,
-/// 8-bit) from the scene's float pixels, kept for the program's life.
+/// 8-bit) from the scene's float pixels, kept for the program's life. Keyed
+/// by address: the benchmarks keep every scene, and so every image, alive
+/// to the end, so no two images share one.
 cairo_surface_t* image_surface(const RasterImage& im) {
     static std::map<const RasterImage*, cairo_surface_t*> made;
     if (cairo_surface_t* s = made[&im]) return s;

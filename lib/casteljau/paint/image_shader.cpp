@@ -27,8 +27,8 @@ int clamp_index(double v, int n) { return v >= 0 ? (v < n ? int(v) : n - 1) : 0;
 /// The two pixels a bilinear sample lies between along one axis of n
 /// pixels, and the weight of the second.
 struct Axis {
-    int i0, i1;
-    float t;
+    int i0 = 0, i1 = 0;
+    float t = 0;
 };
 
 [[gnu::always_inline]] inline Axis bilinear_axis(double v, int n, double inv_n, bool repeat) {
@@ -78,56 +78,56 @@ Premul ImageShader::at(int x, int y) const {
     return c;
 }
 
+void ImageShader::copy_row(int x, int y, int n, Premul* out) const {
+    const RasterImage& im = *image_;
+    // The index of column or row k: tiled by floor-mod, or padded.
+    const auto index = [&](long long k, int size) {
+        return int(repeat_ ? (k % size + size) % size : std::clamp<long long>(k, 0, size - 1));
+    };
+    const Premul* row =
+        im.pixels.data() + std::size_t(index(y + shift_y_, im.height)) * std::size_t(im.width);
+    const long long first = x + shift_x_;
+    if (repeat_) {
+        int i = index(first, im.width);
+        for (int k = 0; k < n; ++k) {
+            out[k] = scaled(row[i]);
+            if (++i == im.width) i = 0;
+        }
+    } else {
+        for (int k = 0; k < n; ++k) out[k] = scaled(row[index(first + k, im.width)]);
+    }
+}
+
 void ImageShader::shade(int x, int y, int n, Premul* out) const {
+    if (aligned_) return copy_row(x, y, n, out);
     const RasterImage& im = *image_;
     const Affine& m = inverse_;
     const double cy = y + 0.5;
     const Premul* px = im.pixels.data();
     const auto pixel = [&](int i, int j) { return px[std::size_t(j) * std::size_t(im.width) + i]; };
-    const auto scaled = [&](const Premul& c) {
-        return Premul{c.r * opacity_, c.g * opacity_, c.b * opacity_, c.a * opacity_};
-    };
-    if (aligned_) {
-        // The index of column or row k: tiled by floor-mod, or padded.
-        const auto index = [&](long long k, int size) {
-            return int(repeat_ ? (k % size + size) % size : std::clamp<long long>(k, 0, size - 1));
-        };
-        const Premul* row =
-            px + std::size_t(index(y + shift_y_, im.height)) * std::size_t(im.width);
-        const long long first = x + shift_x_;
-        if (repeat_) {
-            int i = index(first, im.width);
-            for (int k = 0; k < n; ++k) {
-                out[k] = scaled(row[i]);
-                if (++i == im.width) i = 0;
-            }
-        } else {
-            for (int k = 0; k < n; ++k) out[k] = scaled(row[index(first + k, im.width)]);
-        }
-        return;
-    }
-    // b == 0: p.y = b (x + 0.5) + d cy + f is the same for every x (b x is
-    // +-0, and adding a zero changes no value but a zero's sign, which no
-    // sample below tells apart).
-    const bool level = m.b == 0;
-    if (smooth_) {
-        // The same expression as each pixel's p.y (not d cy + f), so that a
-        // build that fuses multiply-adds rounds it the same way.
-        const Axis row_axis = bilinear_axis((m * Point{x + 0.5, cy}).y, im.height, inv_h_, repeat_);
-        for (int i = 0; i < n; ++i) {
-            const Point p = m * Point{x + i + 0.5, cy};
-            const Axis ax = bilinear_axis(p.x, im.width, inv_w_, repeat_);
-            const Axis ay = level ? row_axis : bilinear_axis(p.y, im.height, inv_h_, repeat_);
-            out[i] = scaled(lerp(lerp(pixel(ax.i0, ay.i0), pixel(ax.i1, ay.i0), ax.t),
-                                 lerp(pixel(ax.i0, ay.i1), pixel(ax.i1, ay.i1), ax.t), ay.t));
-        }
-    } else {
+    if (!smooth_) {
         for (int i = 0; i < n; ++i) {
             const Point p = m * Point{x + i + 0.5, cy};
             const double u = repeat_ ? wrap(p.x, im.width, inv_w_) : p.x;
             const double v = repeat_ ? wrap(p.y, im.height, inv_h_) : p.y;
             out[i] = scaled(pixel(clamp_index(u, im.width), clamp_index(v, im.height)));
         }
+        return;
+    }
+    // b == 0: p.y = b (x + 0.5) + d cy + f is the same for every x (b x is
+    // +-0, and adding a zero changes no value but a zero's sign, which no
+    // sample below tells apart). Taken from the same expression as each
+    // pixel's p.y (not d cy + f), so that a build that fuses multiply-adds
+    // rounds it the same way.
+    const bool level = m.b == 0;
+    const Axis row_axis =
+        level ? bilinear_axis((m * Point{x + 0.5, cy}).y, im.height, inv_h_, repeat_) : Axis{};
+    for (int i = 0; i < n; ++i) {
+        const Point p = m * Point{x + i + 0.5, cy};
+        const Axis ax = bilinear_axis(p.x, im.width, inv_w_, repeat_);
+        const Axis ay = level ? row_axis : bilinear_axis(p.y, im.height, inv_h_, repeat_);
+        out[i] = scaled(lerp(lerp(pixel(ax.i0, ay.i0), pixel(ax.i1, ay.i0), ax.t),
+                             lerp(pixel(ax.i0, ay.i1), pixel(ax.i1, ay.i1), ax.t), ay.t));
     }
 }
 

@@ -53,6 +53,13 @@ class ImageShader {
     void shade(int x, int y, int n, Premul* out) const;
 
   private:
+    /// A color times the opacity (inlined by force: once a pixel).
+    [[gnu::always_inline]] Premul scaled(const Premul& c) const {
+        return {c.r * opacity_, c.g * opacity_, c.b * opacity_, c.a * opacity_};
+    }
+    /// shade() where the map translates by whole pixels: the pixels copied.
+    void copy_row(int x, int y, int n, Premul* out) const;
+
     const RasterImage* image_ = nullptr;
     Affine inverse_;               // device -> image pixel space
     double inv_w_ = 1, inv_h_ = 1; // 1 / width, 1 / height: wrapping multiplies

@@ -15,8 +15,9 @@
 // idle renderer holds no share. When the budget has not enough left, the
 // thread enters the gate instead, holds whatever the call takes (up to the
 // call's own limits), and, once the stroke strip or filter chain is drawn,
-// frees those buffers and leaves (LeaveGate in renderer.cpp). So the threads together hold at most
-// kSharedBytes plus one call's worth, whatever their number, and ordinary
+// frees those buffers and leaves (LeaveGate in renderer.cpp). So the
+// threads together hold at most kSharedBytes plus one call's worth,
+// whatever their number, and ordinary
 // files (strokes below 1.3 MB and chains below 4 MiB reserve nothing) never
 // wait. The pictures do not change, only the order in which the heavy
 // strokes and filters are drawn; a chain larger than the budget alone
