@@ -1,5 +1,5 @@
 // Gradients: the parameter t at known points against the SVG formulas, each
-// spread method, premultiplied and linear-light interpolation, and the SVG
+// spread method, unpremultiplied and linear-light interpolation, and the SVG
 // side (units, gradientTransform, href inheritance, bad references).
 #include "casteljau/paint/gradient.h"
 #include "casteljau/render/renderer.h"
@@ -68,17 +68,24 @@ TEST(Gradient, FocalOutsideTheCircleIsMovedOntoIt) {
     }
 }
 
-TEST(Gradient, PremultipliedInterpolationDoesNotDarken) {
-    // Opaque red to transparent blue: half way, premultiplied, is red at 50%
-    // alpha; non-premultiplied interpolation would give purple.
+TEST(Gradient, StopsInterpolateUnpremultipliedAsSvgDoes) {
+    // Opaque red to transparent blue: half way, the straight color is purple
+    // (0.5, 0, 0.5) at alpha 0.5, as browsers and librsvg draw SVG gradients;
+    // premultiplied interpolation would give red at alpha 0.5 and no blue.
     Gradient g = two_stops(Gradient::Kind::Linear, Spread::Pad, {1, 0, 0, 1}, {0, 0, 1, 0});
     g.p1 = {0, 0}, g.p2 = {1023, 0};
     GradientShader sh;
     ASSERT_TRUE(sh.prepare(g, Affine::identity(), 1));
     const Premul mid = sh.at(511, 0);
     EXPECT_NEAR(mid.a, 0.5f, 2e-3f);
-    EXPECT_NEAR(mid.r, mid.a, 1e-6f);
-    EXPECT_EQ(mid.b, 0.0f);
+    EXPECT_NEAR(mid.r, 0.25f, 2e-3f);
+    EXPECT_NEAR(mid.b, 0.25f, 2e-3f);
+    EXPECT_EQ(mid.g, 0.0f);
+    // Opacity scales the premultiplied color, after interpolation.
+    ASSERT_TRUE(sh.prepare(g, Affine::identity(), 0.5f));
+    const Premul half = sh.at(511, 0);
+    EXPECT_NEAR(half.a, 0.25f, 1e-3f);
+    EXPECT_NEAR(half.r, 0.125f, 1e-3f);
 }
 
 TEST(Gradient, LinearLightInterpolation) {
@@ -160,6 +167,18 @@ TEST(SvgGradient, TransformHrefInheritanceAndStops) {
     EXPECT_NEAR(c.row(90)[50].r, 0.905f, 2e-3f);
     EXPECT_NEAR(c.row(90)[5].r, c.row(90)[95].r, 1e-6f);
     EXPECT_TRUE(warnings.empty());
+}
+
+TEST(SvgGradient, TransparentStopIsTransparentBlack) {
+    // SVG interpolates straight colors: white to `transparent` (black at
+    // alpha 0) passes through gray at half alpha, as browsers and librsvg
+    // draw it; a premultiplied ramp would stay white.
+    const Canvas c = render(R"svg(<svg width="100" height="10"><linearGradient id="g">
+        <stop offset="0" stop-color="white"/><stop offset="1" stop-color="transparent"/>
+        </linearGradient><rect width="100" height="10" fill="url(#g)"/></svg>)svg");
+    const Premul mid = c.row(5)[50];
+    EXPECT_NEAR(mid.a, 0.495f, 3e-3f);
+    EXPECT_NEAR(mid.r, 0.495f * 0.495f, 3e-3f); // gray 0.495 at alpha 0.495
 }
 
 TEST(SvgGradient, MissingReferencesFallBackWithAWarning) {

@@ -16,7 +16,7 @@ float to_srgb(float v) {
     return v <= 0.0031308f ? v * 12.92f : 1.055f * std::pow(v, 1 / 2.4f) - 0.055f;
 }
 
-Premul lerp(Premul a, Premul b, float t) {
+Rgba lerp(Rgba a, Rgba b, float t) {
     return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t,
             a.a + (b.a - a.a) * t};
 }
@@ -82,32 +82,29 @@ bool GradientShader::prepare(const Gradient& g, const Affine& to_device, float o
 }
 
 void GradientShader::build_table(const Gradient& g, float opacity, bool linear_light) {
-    // The table: stops interpolated in the chosen space, then premultiplied
-    // (premultiplied interpolation: a transparent stop does not darken).
-    const auto premul_stop = [&](const GradientStop& s) {
-        Rgba c = s.color;
-        if (linear_light) c = {to_linear(c.r), to_linear(c.g), to_linear(c.b), c.a};
-        return premultiply(c, opacity);
+    // The table: stops interpolated unpremultiplied in the chosen space, then
+    // premultiplied. SVG interpolates its gradients' straight colors (a stop
+    // of transparent black darkens the ramp towards it), as browsers, librsvg,
+    // resvg, Cairo and Skia do; CSS gradients, not drawn here, premultiply.
+    const auto space = [&](Rgba c) {
+        return linear_light ? Rgba{to_linear(c.r), to_linear(c.g), to_linear(c.b), c.a} : c;
     };
     std::size_t k = 0;
     for (int i = 0; i < kGradientLut; ++i) {
         const float t = float(i) / float(kGradientLut - 1);
         while (k < g.stops.size() && g.stops[k].offset < t) ++k;
-        Premul c;
+        Rgba c;
         if (k == 0)
-            c = premul_stop(g.stops.front());
+            c = space(g.stops.front().color);
         else if (k == g.stops.size())
-            c = premul_stop(g.stops.back());
+            c = space(g.stops.back().color);
         else {
             const GradientStop &a = g.stops[k - 1], &b = g.stops[k];
             const float span = b.offset - a.offset;
-            c = lerp(premul_stop(a), premul_stop(b), span > 0 ? (t - a.offset) / span : 1.0f);
+            c = lerp(space(a.color), space(b.color), span > 0 ? (t - a.offset) / span : 1.0f);
         }
-        if (linear_light && c.a > 0) { // back to sRGB encoding, premultiplied
-            const float inv = 1.0f / c.a;
-            c = {to_srgb(c.r * inv) * c.a, to_srgb(c.g * inv) * c.a, to_srgb(c.b * inv) * c.a, c.a};
-        }
-        lut_[std::size_t(i)] = c;
+        if (linear_light) c = {to_srgb(c.r), to_srgb(c.g), to_srgb(c.b), c.a};
+        lut_[std::size_t(i)] = premultiply(c, opacity);
     }
 }
 

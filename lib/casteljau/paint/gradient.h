@@ -15,8 +15,9 @@
 // reflect folds t with period 2. A focal point outside the end circle is moved
 // onto it (13.2.3), and then just inside, where the root above stays defined.
 //
-// Colors between stops are interpolated in premultiplied sRGB-encoded space
-// (or, optionally, premultiplied linear light), through a lookup table of
+// Colors between stops are interpolated unpremultiplied (SVG 2, 13.2.4's stop
+// colors; browsers, librsvg and resvg interpolate straight colors) in
+// sRGB-encoded space, or optionally in linear light, through a lookup table of
 // kGradientLut entries: 1/1024 of the gradient's length is below what 8-bit
 // output can resolve.
 #pragma once
