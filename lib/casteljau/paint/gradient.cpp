@@ -35,22 +35,19 @@ Rgba lerp(Rgba a, Rgba b, float t) {
     return t;
 }
 
-/// The parameter after spread at gradient-space point q; inlined by force
-/// into the loop of shade(), as it runs once a pixel.
-[[gnu::always_inline]] inline double parameter_at(const Gradient& g, Point focal, Point q) {
-    double t;
+/// The parameter before spread at gradient-space point q (the formulas above);
+/// inlined by force into the radial loop of shade(), as it runs once a pixel.
+[[gnu::always_inline]] inline double raw_parameter(const Gradient& g, Point focal, Point q) {
     if (g.kind == Gradient::Kind::Linear) {
         const Vec2 axis = g.p2 - g.p1;
         const double len_sq = axis.length_sq();
-        t = len_sq > 0 ? (q - g.p1).dot(axis) / len_sq : 1.0; // coincident points: the last stop
-    } else {
-        const Vec2 d = q - focal, e = g.center - focal;
-        const double a = e.length_sq() - g.radius * g.radius; // < 0: focal inside
-        const double de = d.dot(e);
-        if (g.radius <= 0) return 1.0; // zero radius: the last stop (13.2.3)
-        t = (de - std::sqrt(std::max(0.0, de * de - a * d.length_sq()))) / a;
+        return len_sq > 0 ? (q - g.p1).dot(axis) / len_sq : 1.0; // coincident points: the last stop
     }
-    return spread(t, g.spread);
+    const Vec2 d = q - focal, e = g.center - focal;
+    const double a = e.length_sq() - g.radius * g.radius; // < 0: focal inside
+    const double de = d.dot(e);
+    if (g.radius <= 0) return 1.0; // zero radius: the last stop (13.2.3)
+    return (de - std::sqrt(std::max(0.0, de * de - a * d.length_sq()))) / a;
 }
 
 } // namespace
@@ -63,6 +60,15 @@ bool GradientShader::prepare(const Gradient& g, const Affine& to_device, float o
     if (!(std::fabs(det) > 1e-12) || !std::isfinite(det)) return false;
     g_ = &g;
     inverse_ = to_device.inverse();
+    // The linear t of a device point (X, Y), the formula above expanded:
+    // ((inverse (X, Y) - p1) . axis) / |axis|^2 = x X + y Y + t0.
+    const Vec2 axis = g.p2 - g.p1;
+    const double len_sq = axis.length_sq();
+    const Affine& m = inverse_;
+    linear_ = len_sq > 0 ? LinearForm{(m.a * axis.x + m.b * axis.y) / len_sq,
+                                      (m.c * axis.x + m.d * axis.y) / len_sq,
+                                      ((m.e - g.p1.x) * axis.x + (m.f - g.p1.y) * axis.y) / len_sq}
+                         : LinearForm{0, 0, 1};
     focal_ = g.focal;
     if (g.kind == Gradient::Kind::Radial) {
         // 13.2.3: a focal point outside the circle moves onto it; 0.999 keeps it
@@ -108,7 +114,9 @@ void GradientShader::build_table(const Gradient& g, float opacity, bool linear_l
     }
 }
 
-double GradientShader::parameter(Point p) const { return parameter_at(*g_, focal_, inverse_ * p); }
+double GradientShader::parameter(Point p) const {
+    return spread(raw_parameter(*g_, focal_, inverse_ * p), g_->spread);
+}
 
 Premul GradientShader::at(int x, int y) const {
     Premul c;
@@ -116,18 +124,63 @@ Premul GradientShader::at(int x, int y) const {
     return c;
 }
 
-void GradientShader::shade(int x, int y, int n, Premul* out) const {
+namespace {
+
+/// The table entry nearest t, for t in [0, 1] after spread() or NaN where the
+/// geometry overflows the double range (end points 1e308 apart, found by
+/// fuzz_svg_render): then the first stop, never an index outside the table.
+[[gnu::always_inline]] inline std::size_t entry(double t) {
+    const double v = (t >= 0 ? std::min(t, 1.0) : 0.0) * (kGradientLut - 1);
+    // std::lround(v) for v >= 0, without its library call: v - k is exact.
+    const int k = int(v);
+    return std::size_t(k + (v - k >= 0.5));
+}
+
+} // namespace
+
+template <Spread S>
+void GradientShader::shade_linear(int x, int y, int n, Premul* out) const {
+    // t is affine in device space: one multiply-add a pixel, no division.
+    const double row = linear_.y * (y + 0.5) + linear_.t0;
+    for (int i = 0; i < n; ++i) out[i] = lut_[entry(spread(linear_.x * (x + i + 0.5) + row, S))];
+}
+
+template <Spread S>
+void GradientShader::shade_radial(int x, int y, int n, Premul* out) const {
     const Gradient& g = *g_;
+    if (g.radius <= 0) { // zero radius: the last stop (13.2.3)
+        std::fill_n(out, n, lut_[entry(spread(1.0, S))]);
+        return;
+    }
+    // The formulas above with d = inverse (X, Y) - f: along a row d is
+    // (m.a X, m.b X) plus a row constant, and the per-shader constants
+    // (e, a and 1 / a) leave the loop.
+    const Affine& m = inverse_;
+    const Vec2 e = g.center - focal_;
+    const double a = e.length_sq() - g.radius * g.radius, inv_a = 1 / a;
     const double cy = y + 0.5;
+    const Vec2 row{m.c * cy + m.e - focal_.x, m.d * cy + m.f - focal_.y};
     for (int i = 0; i < n; ++i) {
-        // t is in [0, 1] after spread(), or NaN where the geometry overflows
-        // the double range (end points 1e308 apart, found by fuzz_svg_render):
-        // then the first stop, never an index outside the table.
-        const double t = parameter_at(g, focal_, inverse_ * Point{x + i + 0.5, cy});
-        const double v = (t >= 0 ? std::min(t, 1.0) : 0.0) * (kGradientLut - 1);
-        // std::lround(v) for v >= 0, without its library call: v - k is exact.
-        const int k = int(v);
-        out[i] = lut_[std::size_t(k + (v - k >= 0.5))];
+        const double cx = x + i + 0.5;
+        const Vec2 d{m.a * cx + row.x, m.b * cx + row.y};
+        const double de = d.dot(e);
+        const double t = (de - std::sqrt(std::max(0.0, de * de - a * d.length_sq()))) * inv_a;
+        out[i] = lut_[entry(spread(t, S))];
+    }
+}
+
+void GradientShader::shade(int x, int y, int n, Premul* out) const {
+    const bool linear = g_->kind == Gradient::Kind::Linear;
+    switch (g_->spread) {
+    case Spread::Pad:
+        return linear ? shade_linear<Spread::Pad>(x, y, n, out)
+                      : shade_radial<Spread::Pad>(x, y, n, out);
+    case Spread::Repeat:
+        return linear ? shade_linear<Spread::Repeat>(x, y, n, out)
+                      : shade_radial<Spread::Repeat>(x, y, n, out);
+    case Spread::Reflect:
+        return linear ? shade_linear<Spread::Reflect>(x, y, n, out)
+                      : shade_radial<Spread::Reflect>(x, y, n, out);
     }
 }
 

@@ -74,7 +74,15 @@ class GradientShader {
     double parameter(Point p) const;
 
   private:
+    /// t of a linear gradient as a function of device coordinates.
+    struct LinearForm {
+        double x = 0, y = 0, t0 = 0; ///< t = x X + y Y + t0
+    };
     void build_table(const Gradient& g, float opacity, bool linear_light);
+    template <Spread S>
+    void shade_linear(int x, int y, int n, Premul* out) const;
+    template <Spread S>
+    void shade_radial(int x, int y, int n, Premul* out) const;
 
     const Gradient* g_ = nullptr;
     /// What the table was built from: compared by value, so a table is never
@@ -83,6 +91,7 @@ class GradientShader {
     float lut_opacity_ = -1;
     bool lut_linear_ = false;
     Affine inverse_;
+    LinearForm linear_;
     Point focal_;
     std::array<Premul, kGradientLut> lut_{};
 };
