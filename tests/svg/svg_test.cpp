@@ -76,6 +76,29 @@ TEST(Reader, ViewBoxAndPreserveAspectRatio) {
     EXPECT_EQ(v.scene->width, 30);
 }
 
+TEST(Reader, OneAbsoluteSideTakesTheOtherFromTheViewBoxRatio) {
+    // graphviz writes width="250pt" and no height: as an <img>, and as
+    // librsvg draws it, the height keeps the viewBox's 363:342.
+    const std::pair<const char*, std::pair<double, double>> cases[] = {
+        {R"(width="250pt")", {250 * 4.0 / 3, 250 * 4.0 / 3 * 342 / 363}},
+        {R"(height="150pt")", {200.0 * 363 / 342, 200}},
+        {R"(width="200" height="auto")", {200, 200.0 * 342 / 363}},
+        {R"(width="200" height="50%")", {200, 200.0 * 342 / 363}},
+        {R"(width="200" height="-x")", {200, 200.0 * 342 / 363}}, // invalid: auto
+        {R"(width="200" height="100")", {200, 100}},              // both given: as given
+        {R"(width="50%" height="50%")", {181.5, 171}},            // neither: of the viewBox
+    };
+    for (const auto& [attrs, size] : cases) {
+        const SvgResult r = parse("", std::string(attrs) + R"( viewBox="0 0 363 342")");
+        ASSERT_TRUE(r.scene) << attrs << ": " << r.error;
+        EXPECT_NEAR(r.scene->width, size.first, 1e-9) << attrs;
+        EXPECT_NEAR(r.scene->height, size.second, 1e-9) << attrs;
+    }
+    // Without a viewBox there is no ratio: the absent side is 100.
+    const SvgResult none = parse("", R"(width="250")");
+    EXPECT_EQ(none.scene->height, 100);
+}
+
 TEST(Reader, RectCornersFollowTheSpecRules) {
     // Only rx given: ry = rx; rx larger than half the width: clamped.
     const SvgResult r = parse(R"(<rect x="0" y="0" width="20" height="100" rx="15"/>)");

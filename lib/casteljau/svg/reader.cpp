@@ -73,24 +73,34 @@ Scene Reader::read() {
     return scene;
 }
 
-// The root's width and height: an absolute length, or (absent, auto or
-// a percentage) that fraction of the viewBox's size, or of 100 x 100
-// without a viewBox (resvg's default; a standalone file has no
-// containing block). Then the viewBox mapping (SVG 1.1, 7.7 and 7.8).
-// Nothing to draw (nullopt) when the viewBox is zero-sized.
+// The root's width and height (SVG 2, 8.2, with CSS 2.1 10.3.2 and 10.6.2
+// for a replaced element's size): an absolute length as given; a side that
+// is absent, auto or a percentage (of no containing block: a standalone file
+// has none) while the other is absolute follows the viewBox's aspect ratio,
+// as in browsers' <img> and librsvg; with neither absolute, each is that
+// fraction (auto: all) of the viewBox's size, or of 100 x 100 without a
+// viewBox (resvg's default). Then the viewBox mapping (SVG 1.1, 7.7 and
+// 7.8). Nothing to draw (nullopt) when the viewBox is zero-sized.
 std::optional<Affine> Reader::viewport(const pugi::xml_node& root, Scene& scene,
                                        const LengthContext& ctx) {
     const std::optional<ViewBox> box = view_box(root);
+    struct Side {
+        double length;
+        bool absolute;
+    };
     const auto side = [&](const char* attr, double from_box) {
         const double full = box ? from_box : 100;
         std::string v = root.attribute(attr).value();
-        if (v.empty() || v == "auto") return full;
-        if (const auto len = parse_length(v, full, ctx)) return *len;
+        if (v.empty() || v == "auto") return Side{full, false};
+        if (const auto len = parse_length(v, full, ctx))
+            return Side{*len, v.find('%') == std::string::npos};
         problem(root, std::string("attribute ") + attr + ": '" + v + "' is not a length; ignored");
-        return full;
+        return Side{full, false};
     };
-    scene.width = side("width", box ? box->w : 0);
-    scene.height = side("height", box ? box->h : 0);
+    const Side w = side("width", box ? box->w : 0), h = side("height", box ? box->h : 0);
+    const bool ratio = box && box->w > 0 && box->h > 0 && w.absolute != h.absolute;
+    scene.width = ratio && h.absolute ? h.length * box->w / box->h : w.length;
+    scene.height = ratio && w.absolute ? w.length * box->h / box->w : h.length;
     for (const double d : {scene.width, scene.height}) {
         char size[32]; // "%g": 1e+308, not its 309 digits
         std::snprintf(size, sizeof size, "%g", d);
