@@ -66,7 +66,8 @@ void add_svg_options(CLI::App* cmd, SvgOptions& o) {
     cmd->add_option_function<std::string>(
         "--font-family-default",
         [](const std::string& family) { FontDatabase::system().set_default_family(family); },
-        "The family for text whose font-family names no font found (default: sans-serif)");
+        "The family for text whose font-family names no font found and no family "
+        "fontconfig classes as serif, monospace... (default: sans-serif)");
     // Path data is drawn up to its first error by default now: the flag of
     // that name stays, accepted and doing nothing, for the scripts that pass it.
     cmd->add_flag("--partial-path-data")->group("");

@@ -94,8 +94,8 @@ TEST(FontDatabase, AddingAFolderThatDoesNotExistFails) {
 }
 
 // The system configuration, pointed at the tests' own fontconfig file: the
-// generic families resolve through its aliases, and an unknown family
-// through the default family, serif.
+// generic families resolve through its aliases, a family it classes but has
+// not through its class, and an unknown family through the default family.
 TEST(FontDatabase, SystemConfigurationHonoursFontconfigFile) {
     const char* old = std::getenv("FONTCONFIG_FILE");
     const std::string saved = old ? old : "";
@@ -111,6 +111,17 @@ TEST(FontDatabase, SystemConfigurationHonoursFontconfigFile) {
     EXPECT_EQ(file_name(db.match(query("system-ui"))), "NotoSans-Regular.ttf");
     EXPECT_EQ(file_name(db.match(query("No Such Font"))), "NotoSans-Regular.ttf");
     EXPECT_EQ(file_name(db.match(query("DejaVu Sans"))), "DejaVuSans.ttf");
+    // Families the file classes but does not have: their class, as librsvg
+    // draws them (a monospaced family stays monospaced), whatever the default.
+    db.set_default_family("DejaVu Serif");
+    EXPECT_EQ(file_name(db.match(query("Courier New"))), "NotoSansMono-Regular.ttf");
+    EXPECT_EQ(file_name(db.match(query("Times New Roman", 700))), "NotoSerif-Bold.ttf");
+    FontQuery list;
+    list.families = {"No Such Font", "Courier New", "Times New Roman"};
+    EXPECT_EQ(file_name(db.match(list)), "NotoSansMono-Regular.ttf");
+    list.families = {"No Such Font", "Courier New", "DejaVu Sans"};
+    EXPECT_EQ(file_name(db.match(list)), "DejaVuSans.ttf"); // a family found comes first
+    EXPECT_EQ(file_name(db.match(query("No Such Font"))), "DejaVuSerif.ttf");
 }
 
 // A character's fallback is a font that has it; none when no font has it.

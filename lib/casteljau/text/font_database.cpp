@@ -4,7 +4,13 @@
 // family, weight, slant and width is taken when it really is that family (a
 // font of another family means fontconfig fell back: the next family is
 // tried, as CSS Fonts 4, 5.1 asks) or when the family is generic, which
-// fontconfig resolves through the system's aliases. A character's fallback
+// fontconfig resolves through the system's aliases. When none of the
+// families is there, the generic family fontconfig's configuration classes
+// the first of them in (its `<default>` aliases, e.g. 45-latin.conf: Courier
+// New monospace, Times New Roman and Palatino serif), as librsvg gets it from
+// fontconfig; a family fontconfig knows nothing of gets its catch-all class
+// (49-sansserif.conf), and then the database's default family is taken
+// instead, which the application may set. A character's fallback
 // is the first font of fontconfig's sorted list for the query whose charset
 // has the character. Results are cached per query: matching is the costly
 // part of fontconfig, and a document asks the same few queries again and again.
@@ -29,6 +35,7 @@ struct FontDatabase::Impl {
     using FamilyKey = std::tuple<std::string, int, int, int>;
     std::map<FamilyKey, FcPattern*> best;
     std::map<FamilyKey, FcFontSet*> sorted;
+    std::map<std::string, std::string> generic_of; // see implied_generic
     std::map<std::pair<std::pair<std::string, int>, std::vector<std::tuple<std::string, double>>>,
              std::shared_ptr<const Font>>
         fonts;
@@ -39,8 +46,10 @@ struct FontDatabase::Impl {
                                          std::optional<char32_t> c);
     std::optional<FontFace> closest(const std::string& family, const FontQuery& q,
                                     std::optional<char32_t> c);
+    const std::string& implied_generic(const std::string& family);
     void forget() {
         matches.clear();
+        generic_of.clear();
         for (auto& [k, p] : best)
             if (p) FcPatternDestroy(p);
         for (auto& [k, set] : sorted)
@@ -135,6 +144,29 @@ FcFontSet* FontDatabase::Impl::sorted_of(const std::string& family, const FontQu
     return sorted[key] = set;
 }
 
+// The first generic family in fontconfig's substitutions of `family` (its
+// configuration's aliases); "" where there is none, or where it is the one
+// fontconfig gives any family (its catch-all).
+const std::string& FontDatabase::Impl::implied_generic(const std::string& family) {
+    if (const auto it = generic_of.find(family); it != generic_of.end()) return it->second;
+    const auto first_generic = [&](const std::string& name) {
+        FcPattern* p = FcPatternCreate();
+        FcPatternAddString(p, FC_FAMILY, reinterpret_cast<const FcChar8*>(name.c_str()));
+        FcConfigSubstitute(config, p, FcMatchPattern);
+        std::string found;
+        FcChar8* f = nullptr;
+        for (int i = 1; found.empty() && FcPatternGetString(p, FC_FAMILY, i, &f) == FcResultMatch;
+             ++i)
+            if (generic(reinterpret_cast<const char*>(f))) found = reinterpret_cast<const char*>(f);
+        FcPatternDestroy(p);
+        return found;
+    };
+    std::string g = generic(family) ? "" : first_generic(family);
+    // A name no configuration mentions: fontconfig's catch-all class.
+    if (!g.empty() && g == first_generic("casteljau: no such family")) g.clear();
+    return generic_of[family] = g;
+}
+
 // The best font of `family` for the query, when it is that family (or the
 // family is generic) and has `c`, when given.
 std::optional<FontFace> FontDatabase::Impl::match_family(const std::string& family,
@@ -215,6 +247,11 @@ std::optional<FontFace> FontDatabase::find(const FontQuery& q, std::optional<cha
     std::optional<FontFace> face;
     for (const std::string& family : q.families)
         if ((face = impl_->match_family(family, q, c))) break;
+    for (const std::string& family : q.families) {
+        if (face) break;
+        if (const std::string& g = impl_->implied_generic(family); !g.empty())
+            face = impl_->match_family(g, q, c);
+    }
     if (!face) face = impl_->match_family(default_family_, q, c);
     if (!face) face = impl_->closest(q.families.empty() ? default_family_ : q.families[0], q, c);
     impl_->matches.emplace(key, face);

@@ -59,9 +59,10 @@ class FontDatabase {
     bool add_font_dir(const std::string& dir);
     /// Adds one font file; false when fontconfig cannot read it.
     bool add_font_file(const std::string& file);
-    /// The family used when none of a query's families is found
-    /// ("sans-serif" unless set: what fontconfig itself falls back to, as
-    /// librsvg and resvg do; browsers take serif).
+    /// The family used when none of a query's families is found and
+    /// fontconfig classes none of them in a generic family ("sans-serif"
+    /// unless set: what fontconfig itself falls back to, as librsvg and
+    /// resvg do; browsers take serif).
     void set_default_family(std::string family);
     /// The family set_default_family gave.
     const std::string& default_family() const { return default_family_; }
