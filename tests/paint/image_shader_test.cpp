@@ -297,6 +297,46 @@ TEST(ImageShader, RowsShadeAsTheFormulasSay) {
         }
 }
 
+TEST(ImageShader, TabulatedColumnsShadeTheSameBits) {
+    // A map that keeps rows level and columns upright: each column's
+    // horizontal half of the sample, tabulated once, gives every row exactly
+    // what computing it per pixel gives; rows reaching past the table, and a
+    // map of another kind, are computed as before.
+    const RasterImage im = random_image(11, 9, 29);
+    const Affine maps[] = {
+        Affine::translate({3.3, -2.1}) * Affine::scale(2.7, 1.9),
+        Affine::translate({40.5, 30.25}) * Affine::scale(-1.5, -3.25),
+        Affine::translate({1, 2}) * Affine::scale(0.37, 5),
+        Affine::translate({5, 5}) * Affine::rotate(0.7) * Affine::scale(2.2), // not tabulated
+        Affine::translate({-3, 5}),                                           // copied
+    };
+    testing::Rng rng(31);
+    for (const Affine& m : maps)
+        for (const bool repeat : {false, true}) {
+            ImageShader plain, tabulated;
+            ASSERT_TRUE(plain.prepare(im, m, 0.75f, true, repeat));
+            ASSERT_TRUE(tabulated.prepare(im, m, 0.75f, true, repeat));
+            tabulated.tabulate(-20, 70);
+            for (int trial = 0; trial < 40; ++trial) {
+                const int x = rng.integer(-40, 80), y = rng.integer(-60, 60);
+                const int n = rng.integer(1, 90);
+                std::vector<Premul> a(static_cast<std::size_t>(n)), b(a);
+                plain.shade(x, y, n, a.data());
+                tabulated.shade(x, y, n, b.data());
+                for (int i = 0; i < n; ++i) {
+                    const Premul &p = a[std::size_t(i)], &q = b[std::size_t(i)];
+                    EXPECT_TRUE(p.r == q.r && p.g == q.g && p.b == q.b && p.a == q.a)
+                        << (repeat ? "repeat " : "pad ") << where(x + i, y) << " map e " << m.e;
+                }
+            }
+            // prepare() drops the table: another map shades as its own.
+            ASSERT_TRUE(tabulated.prepare(im, maps[0], 1, true, repeat));
+            ASSERT_TRUE(plain.prepare(im, maps[0], 1, true, repeat));
+            const Premul p = plain.at(10, 10), q = tabulated.at(10, 10);
+            EXPECT_TRUE(p.r == q.r && p.a == q.a);
+        }
+}
+
 bool in_unit_range(const Premul& p) {
     const auto ok = [](float v) { return v >= 0 && v <= 1; };
     return ok(p.r) && ok(p.g) && ok(p.b) && ok(p.a);

@@ -24,13 +24,9 @@ int clamp_index(double v, int n) { return v >= 0 ? (v < n ? int(v) : n - 1) : 0;
     return r;
 }
 
-/// The two pixels a bilinear sample lies between along one axis of n
-/// pixels, and the weight of the second.
-struct Axis {
-    int i0 = 0, i1 = 0;
-    float t = 0;
-};
+using Axis = ImageShader::Axis;
 
+/// The pixels and weight of a bilinear sample at v along an axis of n pixels.
 [[gnu::always_inline]] inline Axis bilinear_axis(double v, int n, double inv_n, bool repeat) {
     double u = v - 0.5; // pixel centres at integers
     u = repeat ? wrap(u, n, inv_n) : (u >= 0 ? std::min(u, n - 1.0) : 0.0);
@@ -69,7 +65,22 @@ bool ImageShader::prepare(const RasterImage& image, const Affine& to_device, flo
                whole(inverse.e) && whole(inverse.f);
     shift_x_ = aligned_ ? static_cast<long long>(inverse.e) : 0;
     shift_y_ = aligned_ ? static_cast<long long>(inverse.f) : 0;
+    columns_.clear();
     return true;
+}
+
+void ImageShader::tabulate(int x0, int x1) {
+    columns_.clear();
+    const Affine& m = inverse_;
+    if (!image_ || !smooth_ || aligned_ || m.b != 0 || m.c != 0 || x1 <= x0) return;
+    // p.x = a (x + 0.5) + c cy + e with c = 0 is the same for every row cy
+    // (c cy is +-0, and any contraction into multiply-adds adds it exactly),
+    // so row 0's expression gives each row's value.
+    columns_x0_ = x0;
+    columns_.resize(std::size_t(x1 - x0));
+    for (int x = x0; x < x1; ++x)
+        columns_[std::size_t(x - x0)] =
+            bilinear_axis((m * Point{x + 0.5, 0.5}).x, image_->width, inv_w_, repeat_);
 }
 
 Premul ImageShader::at(int x, int y) const {
@@ -122,6 +133,17 @@ void ImageShader::shade(int x, int y, int n, Premul* out) const {
     const bool level = m.b == 0;
     const Axis row_axis =
         level ? bilinear_axis((m * Point{x + 0.5, cy}).y, im.height, inv_h_, repeat_) : Axis{};
+    // In long long: x + n may be past int's range (x is any pixel at()).
+    const long long first = static_cast<long long>(x) - columns_x0_;
+    if (level && first >= 0 && first + n <= static_cast<long long>(columns_.size())) {
+        const Axis* ax = columns_.data() + first;
+        const Axis& ay = row_axis;
+        for (int i = 0; i < n; ++i)
+            out[i] =
+                scaled(lerp(lerp(pixel(ax[i].i0, ay.i0), pixel(ax[i].i1, ay.i0), ax[i].t),
+                            lerp(pixel(ax[i].i0, ay.i1), pixel(ax[i].i1, ay.i1), ax[i].t), ay.t));
+        return;
+    }
     for (int i = 0; i < n; ++i) {
         const Point p = m * Point{x + i + 0.5, cy};
         const Axis ax = bilinear_axis(p.x, im.width, inv_w_, repeat_);

@@ -21,7 +21,10 @@
 // its own centre as above (never a point stepped along the row, which,
 // rounded differently, could land on the other side of a pixel edge). Where
 // the map does not rotate or skew, p.y is the same along the row, and so is
-// the vertical half of the bilinear sample: computed once a row. Where the
+// the vertical half of the bilinear sample: computed once a row; where it
+// keeps columns upright too, the horizontal half is the same for every row,
+// and tabulate() computes it once a shape for the columns the shape covers
+// (from the same expression: the same values). Where the
 // map is a translation by whole pixels (an image drawn at its own size on
 // the pixel grid; a pattern tile drawn at the device resolution, whose side
 // is a whole number of pixels), every pixel centre lands on an image pixel
@@ -35,6 +38,8 @@
 #include "casteljau/paint/raster_image.h"
 #include "casteljau/raster/span.h"
 
+#include <vector>
+
 namespace casteljau {
 
 /// An image ready to shade device pixels: the device -> image map and the
@@ -47,6 +52,11 @@ class ImageShader {
     /// nothing is painted, when the image is empty or the map singular.
     bool prepare(const RasterImage& image, const Affine& to_device, float opacity, bool smooth,
                  bool repeat);
+    /// Where the map keeps rows level and columns upright (a scale and a
+    /// translation) and samples bilinearly: the horizontal half of the
+    /// samples of device columns [x0, x1) (the same for every row), computed
+    /// now, once, and read by shade() from then on. Until the next prepare().
+    void tabulate(int x0, int x1);
     /// The premultiplied color at the centre of device pixel (x, y), times the opacity.
     Premul at(int x, int y) const;
     /// at(x + i, y) into out[i] for i in [0, n): the same values, a row at a time.
@@ -60,6 +70,15 @@ class ImageShader {
     /// shade() where the map translates by whole pixels: the pixels copied.
     void copy_row(int x, int y, int n, Premul* out) const;
 
+  public:
+    /// The two pixels a bilinear sample lies between along one axis, and
+    /// the weight of the second.
+    struct Axis {
+        int i0 = 0, i1 = 0;
+        float t = 0;
+    };
+
+  private:
     const RasterImage* image_ = nullptr;
     Affine inverse_;               // device -> image pixel space
     double inv_w_ = 1, inv_h_ = 1; // 1 / width, 1 / height: wrapping multiplies
@@ -67,6 +86,9 @@ class ImageShader {
     bool smooth_ = true, repeat_ = false;
     bool aligned_ = false; // inverse_ translates by whole pixels: (shift_x_, shift_y_)
     long long shift_x_ = 0, shift_y_ = 0;
+    // tabulate()'s columns: columns_[i] is device column columns_x0_ + i's axis.
+    std::vector<Axis> columns_;
+    int columns_x0_ = 0;
 };
 
 /// Image compositing.

@@ -371,6 +371,11 @@ void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, const
     };
     if (pattern) {
         if (prepare_pattern(*pattern, view_ * s.transform, opacity)) {
+            // The columns the fill can reach: between its edges' extremes.
+            float x0 = float(edges_.clip().x1), x1 = float(edges_.clip().x0);
+            for (const Edge& e : edges_.edges())
+                x0 = std::min({x0, e.x0, e.x1}), x1 = std::max({x1, e.x0, e.x1});
+            image_shader_.tabulate(int(std::floor(x0)), int(std::ceil(x1)));
             ImageSpanPainter<typename Target::pixel_type> painter{target, image_shader_};
             fill_through(painter);
         }
