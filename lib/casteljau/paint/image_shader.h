@@ -74,8 +74,8 @@ class ImageShader {
     /// The two pixels a bilinear sample lies between along one axis, and
     /// the weight of the second.
     struct Axis {
-        int i0 = 0, i1 = 0;
-        float t = 0;
+        int i0 = 0, i1 = 0; ///< the two pixels' indices
+        float t = 0;        ///< the weight of i1, in [0, 1]
     };
 
   private:
