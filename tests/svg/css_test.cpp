@@ -797,5 +797,60 @@ TEST(CssStops, AnInvalidDeclarationIsAProblemAndDropped) {
         << refused.error;
 }
 
+// The control box of each shape the document draws, in document order.
+std::vector<Rect> shape_boxes(const SvgResult& r) {
+    std::vector<Rect> boxes;
+    const std::function<void(const Group&)> visit = [&](const Group& g) {
+        for (const Node& n : g.children) {
+            if (const Shape* s = std::get_if<Shape>(&n.item))
+                boxes.push_back(mapped_box(s->path.control_bounds(), s->transform));
+            else
+                visit(std::get<Group>(n.item));
+        }
+    };
+    visit(r.scene->root);
+    return boxes;
+}
+
+TEST(CssGeometry, StyleSheetsAndStyleAttributesSetShapeGeometry) {
+    // SVG 2's geometry properties are CSS properties of rect, circle, ellipse
+    // and image: the cascade sets them, as other properties; not an svg's or
+    // a use's size. An invalid declaration is a problem and drops out.
+    const SvgResult r = parse_svg(R"svg(<svg xmlns="http://www.w3.org/2000/svg"
+        xmlns:xlink="http://www.w3.org/1999/xlink" width="200" height="200">
+          <style>
+            rect { x: 20; height: 160px }
+            #c { cx: 100px }
+            .e { rx: 30px }
+            .bad { width: wide }
+          </style>
+          <rect y="20" width="160"/>
+          <rect x="5" y="5" width="10" height="10" style="HEIGHT : 50px; y: 1px"/>
+          <circle id="c" cy="100" r="80"/>
+          <ellipse class="e" cx="50" cy="50" ry="10"/>
+          <rect class="bad" width="30" style="height: 12px"/>
+          <svg viewBox="0 0 100 100" style="width: 50px; height: 50px">
+            <circle cx="50" cy="50" r="50"/></svg>
+        </svg>)svg",
+                                  "g.svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    const std::vector<Rect> b = shape_boxes(r);
+    ASSERT_EQ(b.size(), 6u);
+    const auto expect_box = [](const Rect& got, const Rect& want, const char* why) {
+        EXPECT_NEAR(got.x0, want.x0, 1e-9) << why;
+        EXPECT_NEAR(got.y0, want.y0, 1e-9) << why;
+        EXPECT_NEAR(got.x1, want.x1, 1e-9) << why;
+        EXPECT_NEAR(got.y1, want.y1, 1e-9) << why;
+    };
+    expect_box(b[0], {20, 20, 180, 180}, "type selector, a unitless x");
+    expect_box(b[1], {20, 1, 30, 51}, "the style attribute over the sheet's height");
+    expect_box(b[2], {20, 20, 180, 180}, "id selector: cx");
+    expect_box(b[3], {20, 40, 80, 60}, "class selector: rx");
+    expect_box(b[4], {20, 0, 50, 12}, "an invalid width: the attribute's");
+    expect_box(b[5], {0, 0, 200, 200}, "the nested svg's CSS size ignored: 100%");
+    EXPECT_EQ(warnings_text(r),
+              "g.svg:13: <rect>: style sheet: property width: 'wide' is not a length; ignored\n");
+}
+
 } // namespace
 } // namespace casteljau

@@ -99,6 +99,35 @@ TEST(Reader, OneAbsoluteSideTakesTheOtherFromTheViewBoxRatio) {
     EXPECT_EQ(none.scene->height, 100);
 }
 
+TEST(Reader, RootTransformAppliesInViewportPixelsAroundItsOrigin) {
+    // The root's transform after the viewBox mapping (200 px for 100 user
+    // units), around 50% 50% of the viewport unless transform-origin says.
+    const std::string root =
+        R"svg(width="200" height="200" viewBox="0 0 100 100" transform="scale(0.5)")svg";
+    const std::pair<const char*, std::pair<Point, Point>> cases[] = {
+        {"", {{50, 50}, {150, 150}}},
+        {R"( transform-origin="0 0")", {{0, 0}, {100, 100}}},
+        {R"( transform-origin="25% 75%")", {{25, 75}, {125, 175}}},
+        {R"( style="transform-origin: right bottom")", {{100, 100}, {200, 200}}},
+    };
+    for (const auto& [origin, corners] : cases) {
+        const SvgResult r = parse(R"(<rect width="100" height="100"/>)", root + origin);
+        ASSERT_TRUE(r.scene) << origin << ": " << r.error;
+        const Affine& m = first_shape(*r.scene).transform;
+        EXPECT_EQ((m * Point{0, 0}), corners.first) << origin;
+        EXPECT_EQ((m * Point{100, 100}), corners.second) << origin;
+        EXPECT_TRUE(r.warnings.empty()) << origin;
+    }
+    const SvgResult moved = parse(R"(<rect width="10" height="10"/>)",
+                                  R"svg(width="100" height="100" transform="translate(30 5)")svg");
+    EXPECT_EQ((first_shape(*moved.scene).transform * Point{0, 0}), (Point{30, 5}));
+    const SvgResult bad = parse(R"(<rect width="10" height="10"/>)",
+                                R"svg(width="100" height="100" transform="translate(30,")svg");
+    EXPECT_EQ((first_shape(*bad.scene).transform * Point{0, 0}), (Point{0, 0}));
+    ASSERT_EQ(bad.warnings.size(), 1u);
+    EXPECT_NE(bad.warnings[0].text().find("transform"), std::string::npos);
+}
+
 TEST(Reader, RectCornersFollowTheSpecRules) {
     // Only rx given: ry = rx; rx larger than half the width: clamped.
     const SvgResult r = parse(R"(<rect x="0" y="0" width="20" height="100" rx="15"/>)");

@@ -3,6 +3,7 @@
 #include "casteljau/curve/path_data.h"
 #include "casteljau/io/text_file.h"
 #include "casteljau/svg/conditional.h"
+#include "casteljau/svg/detail/ascii.h"
 #include "casteljau/svg/detail/css_pugi.h"
 #include "casteljau/svg/detail/reader_impl.h"
 #include "casteljau/svg/shapes.h"
@@ -22,16 +23,69 @@ std::string SvgDiagnostic::text() const {
 
 namespace svg_detail {
 
-// A length attribute; nullopt when absent, auto, or invalid (a problem).
+namespace {
+
+// SVG 2's geometry properties (x, y, width, height, cx, cy, r, rx, ry; 9.2 to
+// 9.4, 12.3): CSS properties of the elements below, so a style sheet or a
+// style attribute may set them. Browsers (and resvg) take them there only:
+// an svg's or a use's width in CSS is ignored.
+bool geometry_property(std::string_view element, std::string_view attr) {
+    if (element == "rect")
+        return attr == "x" || attr == "y" || attr == "width" || attr == "height" || attr == "rx" ||
+               attr == "ry";
+    if (element == "image")
+        return attr == "x" || attr == "y" || attr == "width" || attr == "height";
+    if (element == "circle") return attr == "cx" || attr == "cy" || attr == "r";
+    if (element == "ellipse") return attr == "cx" || attr == "cy" || attr == "rx" || attr == "ry";
+    return false;
+}
+
+// Whether a style attribute's text has a declaration of `property` (its name
+// before a colon, ASCII case aside). A false yes, in a comment or a string,
+// only costs a cascade.
+bool declares(std::string_view style, std::string_view property) {
+    while (!style.empty()) {
+        const std::size_t semicolon = std::min(style.find(';'), style.size());
+        const std::string_view declaration = style.substr(0, semicolon);
+        const std::size_t colon = declaration.find(':');
+        if (colon != std::string_view::npos &&
+            iequals(trim(declaration.substr(0, colon)), property))
+            return true;
+        style.remove_prefix(std::min(semicolon + 1, style.size()));
+    }
+    return false;
+}
+
+} // namespace
+
+// A length attribute, or for a geometry property its cascaded value (the
+// last valid declaration); nullopt when absent, auto, or invalid (a problem
+// for each invalid declaration).
 std::optional<double> Reader::length(const pugi::xml_node& n, const char* attr, double percent_of,
                                      const LengthContext& ctx) {
-    const pugi::xml_attribute a = n.attribute(attr);
-    if (!a || std::strcmp(a.value(), "auto") == 0) return std::nullopt;
-    const auto v = parse_length(a.value(), percent_of, ctx);
-    if (!v)
-        problem(n, std::string("attribute ") + attr + ": '" + a.value() +
-                       "' is not a length; ignored");
-    return v;
+    std::optional<double> value;
+    const auto take = [&](std::string_view v, const char* from) {
+        if (v == "auto") return void(value = std::nullopt);
+        if (const auto len = parse_length(v, percent_of, ctx)) return void(value = len);
+        problem(n, (*from ? std::string(from) + "property " : std::string("attribute ")) + attr +
+                       ": '" + std::string(v) + "' is not a length; ignored");
+    };
+    // The cascade only where CSS can set it: a style sheet declares it for
+    // the element, or the style attribute names it (most elements have
+    // neither, and cascade() parses the style attribute again).
+    const auto in_css = [&] {
+        for (const CssDeclaration* d : matched(n))
+            if (d->name == attr) return true;
+        return declares(n.attribute("style").value(), attr);
+    };
+    if (!geometry_property(n.name(), attr) || !in_css()) {
+        if (const pugi::xml_attribute a = n.attribute(attr)) take(a.value(), "");
+        return value;
+    }
+    cascade(n, false, [&](std::string_view name, std::string_view v, const char* from) {
+        if (name == attr) take(v, from);
+    });
+    return value;
 }
 
 Scene Reader::read() {
@@ -80,7 +134,8 @@ Scene Reader::read() {
 // as in browsers' <img> and librsvg; with neither absolute, each is that
 // fraction (auto: all) of the viewBox's size, or of 100 x 100 without a
 // viewBox (resvg's default). Then the viewBox mapping (SVG 1.1, 7.7 and
-// 7.8). Nothing to draw (nullopt) when the viewBox is zero-sized.
+// 7.8), and the root's transform. Nothing to draw (nullopt) when the viewBox
+// is zero-sized.
 std::optional<Affine> Reader::viewport(const pugi::xml_node& root, Scene& scene,
                                        const LengthContext& ctx) {
     const std::optional<ViewBox> box = view_box(root);
@@ -125,12 +180,28 @@ std::optional<Affine> Reader::viewport(const pugi::xml_node& root, Scene& scene,
                                          quiet_ = quiet;
                                          return color;
                                      }});
-    if (!box) return Affine::identity();
-    if (box->w == 0 || box->h == 0) {
+    if (box && (box->w == 0 || box->h == 0)) {
         warn(root, "viewBox: a zero width or height disables rendering");
         return std::nullopt;
     }
-    return view_map(root, *box, scene.width, scene.height);
+    const Affine view = box ? view_map(root, *box, scene.width, scene.height) : Affine::identity();
+    // The root's own transform (SVG 2 allows one on the outermost svg; CSS
+    // Transforms 1) applies in the viewport's pixels, around its
+    // transform-origin, which there is 50% 50% of the viewport (browsers' UA
+    // style sheet makes it 0 0 only for an svg inside another element).
+    const pugi::xml_attribute t = root.attribute("transform");
+    if (!t) return view;
+    const TransformResult tr = parse_transform_list(t.value());
+    if (!tr.error.empty()) {
+        problem(root, "transform: " + tr.error + "; ignored");
+        return view;
+    }
+    LengthContext in_pixels = ctx;
+    in_pixels.viewport_w = scene.width, in_pixels.viewport_h = scene.height;
+    Vec2 o{scene.width / 2, scene.height / 2};
+    for (const std::string& v : declarations(root, "transform-origin"))
+        if (const auto origin = parse_transform_origin(v, in_pixels)) o = *origin;
+    return Affine::translate(o) * tr.transform * Affine::translate(-o) * view;
 }
 
 // The element's viewBox: nullopt when absent, or in error (a problem; the

@@ -208,8 +208,6 @@ std::optional<double> parse_font_size(std::string_view v, double parent, const L
     return at_least(parse_length(v, parent, of_parent), 0);
 }
 
-namespace {
-
 // transform-origin: one to three values, each a length, a percentage or a
 // keyword (left, center, right for x; top, center, bottom for y; a single y
 // keyword leaves x at center), the third (z) ignored in 2D.
@@ -252,6 +250,8 @@ std::optional<Vec2> parse_transform_origin(std::string_view v, const LengthConte
     if (words.size() == 3 && !parse_length(words[2], 0, ctx)) return std::nullopt;
     return Vec2{f[0], f[1]};
 }
+
+namespace {
 
 // clip: auto, or rect(top, right, bottom, left), each a length or auto
 // (auto: that edge of the viewport), separated by commas or, as CSS 2.1
@@ -417,7 +417,8 @@ std::string apply_property(std::string_view name, std::string_view value, const 
                    lookup<bool>(value, {{"auto", false}, {"sRGB", false}, {"linearRGB", true}}),
                    "auto, sRGB or linearRGB");
     if (name == "filter") {
-        if (!parse_filter_list(value, ctx)) return bad(name, value, "none, url(#id) or filter functions");
+        if (!parse_filter_list(value, ctx))
+            return bad(name, value, "none, url(#id) or filter functions");
         props.filter = value == "none" ? std::string() : std::string(value);
         return "";
     }
@@ -428,8 +429,8 @@ std::string apply_property(std::string_view name, std::string_view value, const 
         return std::nullopt;
     };
     if (name == "flood-color")
-        return set(props.flood_color, std::optional<Rgba>(Rgba{0, 0, 0, 1}), color_or_current(value),
-                   "a color");
+        return set(props.flood_color, std::optional<Rgba>(Rgba{0, 0, 0, 1}),
+                   color_or_current(value), "a color");
     if (name == "flood-opacity")
         return set(props.flood_opacity, 1.0f, parse_opacity(value), "an opacity");
     if (name == "lighting-color")

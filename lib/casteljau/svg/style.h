@@ -142,6 +142,11 @@ std::optional<double> parse_number(std::string_view text, std::string_view* rest
 std::optional<double> parse_length(std::string_view text, double percent_of = 0,
                                    const LengthContext& ctx = {});
 
+/// transform-origin (CSS Transforms 1, 6): one to three values, each a length,
+/// a percentage of ctx's viewport or a keyword; the third (z) is ignored in
+/// 2D. nullopt when invalid.
+std::optional<Vec2> parse_transform_origin(std::string_view v, const LengthContext& ctx);
+
 /// A font-size: a keyword (xx-small to xxx-large, larger, smaller) or a
 /// non-negative length, em and % of `parent` (the parent's font size);
 /// nullopt when invalid. Shared with the font shorthand.
