@@ -20,12 +20,12 @@ namespace casteljau {
 namespace {
 
 constexpr std::array<BlendMode, 16> kModes = {
-    BlendMode::Normal,     BlendMode::Multiply,   BlendMode::Screen,     BlendMode::Overlay,
-    BlendMode::Darken,     BlendMode::Lighten,    BlendMode::ColorDodge, BlendMode::ColorBurn,
-    BlendMode::HardLight,  BlendMode::SoftLight,  BlendMode::Difference, BlendMode::Exclusion,
-    BlendMode::Hue,        BlendMode::Saturation, BlendMode::Color,      BlendMode::Luminosity};
+    BlendMode::Normal,    BlendMode::Multiply,   BlendMode::Screen,     BlendMode::Overlay,
+    BlendMode::Darken,    BlendMode::Lighten,    BlendMode::ColorDodge, BlendMode::ColorBurn,
+    BlendMode::HardLight, BlendMode::SoftLight,  BlendMode::Difference, BlendMode::Exclusion,
+    BlendMode::Hue,       BlendMode::Saturation, BlendMode::Color,      BlendMode::Luminosity};
 constexpr std::array<const char*, 16> kNames = {
-    "normal",      "multiply",   "screen",     "overlay",    "darken",    "lighten",
+    "normal",      "multiply",   "screen",     "overlay",    "darken",     "lighten",
     "color-dodge", "color-burn", "hard-light", "soft-light", "difference", "exclusion",
     "hue",         "saturation", "color",      "luminosity"};
 
@@ -74,12 +74,18 @@ using C3 = std::array<double, 3>;
 
 double ref_channel(BlendMode m, double cb, double cs) {
     switch (m) {
-    case BlendMode::Normal: return cs;
-    case BlendMode::Multiply: return cb * cs;
-    case BlendMode::Screen: return cb + cs - cb * cs;
-    case BlendMode::Overlay: return ref_channel(BlendMode::HardLight, cs, cb);
-    case BlendMode::Darken: return std::min(cb, cs);
-    case BlendMode::Lighten: return std::max(cb, cs);
+    case BlendMode::Normal:
+        return cs;
+    case BlendMode::Multiply:
+        return cb * cs;
+    case BlendMode::Screen:
+        return cb + cs - cb * cs;
+    case BlendMode::Overlay:
+        return ref_channel(BlendMode::HardLight, cs, cb);
+    case BlendMode::Darken:
+        return std::min(cb, cs);
+    case BlendMode::Lighten:
+        return std::max(cb, cs);
     case BlendMode::ColorDodge:
         if (cb == 0) return 0;
         if (cs == 1) return 1;
@@ -96,9 +102,12 @@ double ref_channel(BlendMode m, double cb, double cs) {
         const double d = cb <= 0.25 ? ((16 * cb - 12) * cb + 4) * cb : std::sqrt(cb);
         return cb + (2 * cs - 1) * (d - cb);
     }
-    case BlendMode::Difference: return std::fabs(cb - cs);
-    case BlendMode::Exclusion: return cb + cs - 2 * cb * cs;
-    default: return std::numeric_limits<double>::quiet_NaN(); // not separable
+    case BlendMode::Difference:
+        return std::fabs(cb - cs);
+    case BlendMode::Exclusion:
+        return cb + cs - 2 * cb * cs;
+    default:
+        return std::numeric_limits<double>::quiet_NaN(); // not separable
     }
 }
 
@@ -119,14 +128,13 @@ C3 SetLum(const C3& c, double l) {
     return ClipColor({c[0] + d, c[1] + d, c[2] + d});
 }
 
-double Sat(const C3& c) {
-    return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]});
-}
+double Sat(const C3& c) { return std::max({c[0], c[1], c[2]}) - std::min({c[0], c[1], c[2]}); }
 
 // With the channels sorted, as the spec writes it.
 C3 SetSat(const C3& c, double s) {
     std::array<int, 3> i = {0, 1, 2};
-    std::sort(i.begin(), i.end(), [&](int p, int q) { return c[std::size_t(p)] < c[std::size_t(q)]; });
+    std::sort(i.begin(), i.end(),
+              [&](int p, int q) { return c[std::size_t(p)] < c[std::size_t(q)]; });
     const auto lo = std::size_t(i[0]), mid = std::size_t(i[1]), hi = std::size_t(i[2]);
     C3 o{};
     if (c[hi] > c[lo]) {
@@ -138,11 +146,16 @@ C3 SetSat(const C3& c, double s) {
 
 C3 ref_blend(BlendMode m, const C3& cb, const C3& cs) {
     switch (m) {
-    case BlendMode::Hue: return SetLum(SetSat(cs, Sat(cb)), Lum(cb));
-    case BlendMode::Saturation: return SetLum(SetSat(cb, Sat(cs)), Lum(cb));
-    case BlendMode::Color: return SetLum(cs, Lum(cb));
-    case BlendMode::Luminosity: return SetLum(cb, Lum(cs));
-    default: break;
+    case BlendMode::Hue:
+        return SetLum(SetSat(cs, Sat(cb)), Lum(cb));
+    case BlendMode::Saturation:
+        return SetLum(SetSat(cb, Sat(cs)), Lum(cb));
+    case BlendMode::Color:
+        return SetLum(cs, Lum(cb));
+    case BlendMode::Luminosity:
+        return SetLum(cb, Lum(cs));
+    default:
+        break;
     }
     C3 o;
     for (std::size_t i = 0; i < 3; ++i) o[i] = ref_channel(m, cb[i], cs[i]);
@@ -178,8 +191,7 @@ TEST(BlendModes, MatchTheSpecReference) {
                 worst = std::max(worst, err);
                 ASSERT_LE(err, 1e-5) << name(m) << " trial " << trial << " channel " << i
                                      << ": backdrop " << show(d) << " source " << show(s)
-                                     << " gives " << show(o) << ", want "
-                                     << want[std::size_t(i)];
+                                     << " gives " << show(o) << ", want " << want[std::size_t(i)];
             }
         }
         std::ostringstream w;
@@ -210,9 +222,8 @@ TEST(BlendModes, TransparentSideLeavesTheOtherExactly) {
         for (int trial = 0; trial < 2000; ++trial) {
             const Premul c = random_color(rng);
             const Premul over_clear = blend(clear, c, m), under_clear = blend(c, clear, m);
-            ASSERT_TRUE(same(over_clear, c))
-                << name(m) << ": source " << show(c) << " over transparent gives "
-                << show(over_clear);
+            ASSERT_TRUE(same(over_clear, c)) << name(m) << ": source " << show(c)
+                                             << " over transparent gives " << show(over_clear);
             ASSERT_TRUE(same(under_clear, c))
                 << name(m) << ": transparent over " << show(c) << " gives " << show(under_clear);
         }
@@ -330,6 +341,24 @@ TEST(BlendModes, ParsesTheCssKeywords) {
     for (const char* bad : {"", "plus-lighter", "multiply ", " multiply", "colordodge",
                             "color_dodge", "lum", "luminosityx"})
         EXPECT_FALSE(parse_blend_mode(bad).has_value()) << "'" << bad << "'";
+}
+
+TEST(BlendModes, PlusLighterIsTheClampedSumAndMixBlendModeOnly) {
+    std::mt19937 rng(1108);
+    for (int i = 0; i < 2000; ++i) {
+        const Premul d = random_color(rng), s = random_color(rng);
+        const Premul o = blend(d, s, BlendMode::PlusLighter);
+        const Premul want{std::min(1.0f, d.r + s.r), std::min(1.0f, d.g + s.g),
+                          std::min(1.0f, d.b + s.b), std::min(1.0f, d.a + s.a)};
+        for (int k = 0; k < 4; ++k)
+            ASSERT_EQ(channel(o, k), channel(want, k)) << show(d) << show(s);
+        for (int k = 0; k < 3; ++k) ASSERT_LE(channel(o, k), o.a) << show(d) << show(s);
+    }
+    EXPECT_EQ(parse_mix_blend_mode("plus-lighter"), BlendMode::PlusLighter);
+    EXPECT_EQ(parse_mix_blend_mode("Plus-Lighter"), BlendMode::PlusLighter);
+    for (BlendMode m : kModes) EXPECT_EQ(parse_mix_blend_mode(name(m)), m) << name(m);
+    EXPECT_FALSE(parse_mix_blend_mode("plus-darker").has_value());
+    EXPECT_FALSE(parse_blend_mode("plus-lighter").has_value()); // feBlend's <blend-mode>
 }
 
 // (g) composite_layer on both pixel formats.

@@ -293,6 +293,24 @@ TEST(BlendMode, IsolationKeepsTheBackdropOut) {
     EXPECT_NEAR(p.row(50)[75].b, 1, 1e-6);
 }
 
+TEST(BlendMode, PlusLighterAddsAndFeBlendRefusesIt) {
+    // mix-blend-mode: plus-lighter (Compositing 2) sums the premultiplied
+    // colors, clamped: red plus half-transparent green is (1, 0.5, 0) at alpha 1.
+    // feBlend's mode takes only <blend-mode>s: plus-lighter there is normal.
+    const Canvas c = render(R"svg(<rect width="100" height="100" fill="#ff0000"/>
+        <rect width="50" height="100" fill="#00ff00" fill-opacity="0.5"
+              style="mix-blend-mode:plus-lighter"/>)svg");
+    EXPECT_NEAR(c.row(50)[25].r, 1, 1e-6);
+    EXPECT_NEAR(c.row(50)[25].g, 0.5, 1e-6);
+    EXPECT_NEAR(c.row(50)[25].a, 1, 1e-6);
+    EXPECT_NEAR(c.row(50)[75].g, 0, 1e-6);
+    const Canvas f = render(R"svg(<filter id="f"><feFlood flood-color="#00ff00" result="g"/>
+        <feBlend in="g" in2="SourceGraphic" mode="plus-lighter"/></filter>
+        <rect width="100" height="100" fill="#ff0000" filter="url(#f)"/>)svg");
+    EXPECT_NEAR(f.row(50)[50].r, 0, 1e-6); // green over red: normal
+    EXPECT_NEAR(f.row(50)[50].g, 1, 1e-6);
+}
+
 TEST(LayerBudget, OverItAClippedGroupIsNotDrawnAndAnOpaqueOneIsDrawnStraight) {
     // Past the layer budget, what a clip would hide never shows; a group
     // with only opacity is drawn without it.

@@ -31,6 +31,10 @@
 //   saturation  SetLum(SetSat(Cb, Sat(Cs)), Lum(Cb))
 //   color       SetLum(Cs, Lum(Cb))
 //   luminosity  SetLum(Cb, Lum(Cs))
+// plus-lighter (Compositing and Blending Level 2, 9.1.14) is no blend
+// function but its own composite, the premultiplied sum clamped to 1:
+//   co = min(1, cs + cb),   ao = min(1, as + ab)
+// (each co stays within its ao, as cs <= as and cb <= ab).
 // Colors are blended as they are encoded (sRGB), as browsers do.
 #include "casteljau/paint/blend.h"
 
@@ -137,6 +141,11 @@ Premul mix(const Premul& d, const Premul& s) {
     return {channel(s.r, d.r, m.r), channel(s.g, d.g, m.g), channel(s.b, d.b, m.b), ao};
 }
 
+Premul plus_lighter(const Premul& d, const Premul& s) {
+    return {std::min(1.0f, d.r + s.r), std::min(1.0f, d.g + s.g), std::min(1.0f, d.b + s.b),
+            std::min(1.0f, d.a + s.a)};
+}
+
 Premul over(const Premul& d, const Premul& s) {
     Premul o = d;
     blend_over(o, s, 1.0f);
@@ -150,29 +159,47 @@ using Kernel = Premul (*)(const Premul& backdrop, const Premul& source);
 template <class F>
 decltype(auto) with_kernel(BlendMode mode, F&& f) {
     switch (mode) {
-    case BlendMode::Normal: return f.template operator()<over>();
-    case BlendMode::Multiply: return f.template operator()<mix<separable<multiply>>>();
-    case BlendMode::Screen: return f.template operator()<mix<separable<screen>>>();
-    case BlendMode::Overlay: return f.template operator()<mix<separable<overlay>>>();
-    case BlendMode::Darken: return f.template operator()<mix<separable<darken>>>();
-    case BlendMode::Lighten: return f.template operator()<mix<separable<lighten>>>();
-    case BlendMode::ColorDodge: return f.template operator()<mix<separable<color_dodge>>>();
-    case BlendMode::ColorBurn: return f.template operator()<mix<separable<color_burn>>>();
-    case BlendMode::HardLight: return f.template operator()<mix<separable<hard_light>>>();
-    case BlendMode::SoftLight: return f.template operator()<mix<separable<soft_light>>>();
-    case BlendMode::Difference: return f.template operator()<mix<separable<difference>>>();
-    case BlendMode::Exclusion: return f.template operator()<mix<separable<exclusion>>>();
-    case BlendMode::Hue: return f.template operator()<mix<hue>>();
-    case BlendMode::Saturation: return f.template operator()<mix<saturation>>();
-    case BlendMode::Color: return f.template operator()<mix<color>>();
-    case BlendMode::Luminosity: return f.template operator()<mix<luminosity>>();
+    case BlendMode::Normal:
+        return f.template operator()<over>();
+    case BlendMode::Multiply:
+        return f.template operator()<mix<separable<multiply>>>();
+    case BlendMode::Screen:
+        return f.template operator()<mix<separable<screen>>>();
+    case BlendMode::Overlay:
+        return f.template operator()<mix<separable<overlay>>>();
+    case BlendMode::Darken:
+        return f.template operator()<mix<separable<darken>>>();
+    case BlendMode::Lighten:
+        return f.template operator()<mix<separable<lighten>>>();
+    case BlendMode::ColorDodge:
+        return f.template operator()<mix<separable<color_dodge>>>();
+    case BlendMode::ColorBurn:
+        return f.template operator()<mix<separable<color_burn>>>();
+    case BlendMode::HardLight:
+        return f.template operator()<mix<separable<hard_light>>>();
+    case BlendMode::SoftLight:
+        return f.template operator()<mix<separable<soft_light>>>();
+    case BlendMode::Difference:
+        return f.template operator()<mix<separable<difference>>>();
+    case BlendMode::Exclusion:
+        return f.template operator()<mix<separable<exclusion>>>();
+    case BlendMode::Hue:
+        return f.template operator()<mix<hue>>();
+    case BlendMode::Saturation:
+        return f.template operator()<mix<saturation>>();
+    case BlendMode::Color:
+        return f.template operator()<mix<color>>();
+    case BlendMode::Luminosity:
+        return f.template operator()<mix<luminosity>>();
+    case BlendMode::PlusLighter:
+        return f.template operator()<plus_lighter>();
     }
     return f.template operator()<over>(); // a value outside the enum: plain source-over
 }
 
 // The CSS keywords, in the order of BlendMode's enumerators.
 constexpr std::array<std::string_view, 16> kKeywords = {
-    "normal",      "multiply",   "screen",     "overlay",    "darken",    "lighten",
+    "normal",      "multiply",   "screen",     "overlay",    "darken",     "lighten",
     "color-dodge", "color-burn", "hard-light", "soft-light", "difference", "exclusion",
     "hue",         "saturation", "color",      "luminosity"};
 static_assert(kKeywords.size() == std::size_t(BlendMode::Luminosity) + 1);
@@ -222,6 +249,11 @@ std::optional<BlendMode> parse_blend_mode(std::string_view css_keyword) {
     for (std::size_t i = 0; i < kKeywords.size(); ++i)
         if (equals_ascii_ci(css_keyword, kKeywords[i])) return BlendMode(i);
     return std::nullopt;
+}
+
+std::optional<BlendMode> parse_mix_blend_mode(std::string_view css_keyword) {
+    if (equals_ascii_ci(css_keyword, "plus-lighter")) return BlendMode::PlusLighter;
+    return parse_blend_mode(css_keyword);
 }
 
 } // namespace casteljau

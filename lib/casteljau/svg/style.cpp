@@ -404,7 +404,7 @@ std::string apply_property(std::string_view name, std::string_view value, const 
                        value, {{"nonzero", FillRule::NonZero}, {"evenodd", FillRule::EvenOdd}}),
                    "nonzero or evenodd");
     if (name == "mix-blend-mode")
-        return set(props.blend, BlendMode::Normal, parse_blend_mode(value), "a blend mode");
+        return set(props.blend, BlendMode::Normal, parse_mix_blend_mode(value), "a blend mode");
     if (name == "isolation")
         return set(props.isolate, false, lookup<bool>(value, {{"auto", false}, {"isolate", true}}),
                    "auto or isolate");
