@@ -220,8 +220,8 @@ TEST(TextBaseline, BaselineShiftRaisesAndLowersATspan) {
 // value: text under a raised group, asking for it, is raised as much as
 // text that sets it itself (resvg's a-baseline-shift-016).
 TEST(TextBaseline, BaselineShiftInheritTakesTheParentsOwnValue) {
-    const Rect own = bounds_of(
-        R"(<text x="10" y="100" font-size="40" baseline-shift="super">H</text>)");
+    const Rect own =
+        bounds_of(R"(<text x="10" y="100" font-size="40" baseline-shift="super">H</text>)");
     const Rect inherited = bounds_of(
         R"(<g baseline-shift="super"><text x="10" y="100" font-size="40" baseline-shift="inherit">H</text></g>)");
     const Rect plain = bounds_of(R"(<text x="10" y="100" font-size="40">H</text>)");
@@ -486,6 +486,29 @@ TEST(TextBidi, HebrewRunsRightToLeftInsideLeftToRightText) {
     EXPECT_GT(alef.x0, bet.x0) << str(alef) << " " << str(bet);
     EXPECT_GT(bet.x0, gimel.x0) << str(bet) << " " << str(gimel);
     EXPECT_GE(alef.x0, bet.x1 - 1e-9) << "no overlap";
+}
+
+TEST(TextBidi, DxAddsUpInLogicalOrderInRightToLeftText) {
+    // alef, bet, gimel, each in a tspan: drawn right to left. dx on the first
+    // (logical) character moves every character, as SVG 2's algorithm adds
+    // the moves up in logical order; dx on the last moves the last alone.
+    const auto boxes = [](const std::string& dx) {
+        const SvgResult r = read(text(R"(x="100" y="100" font-size="20")" + dx,
+                                      each({"\xD7\x90", "\xD7\x91", "\xD7\x92"})));
+        EXPECT_TRUE(r.scene) << r.error;
+        std::vector<Rect> b;
+        for (const Shape* s : shapes(r)) b.push_back(s->path.bounds());
+        return b;
+    };
+    const std::vector<Rect> plain = boxes(""), first = boxes(R"( dx="7")"),
+                            last = boxes(R"( dx="0 0 7")");
+    ASSERT_EQ(plain.size(), 3u);
+    ASSERT_EQ(first.size(), 3u);
+    ASSERT_EQ(last.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_NEAR(first[i].x0, plain[i].x0 + 7, 1e-9) << "character " << i;
+        EXPECT_NEAR(last[i].x0, plain[i].x0 + (i == 2 ? 7 : 0), 1e-9) << "character " << i;
+    }
 }
 
 TEST(TextBidi, LatinStaysLeftToRightInARightToLeftParagraph) {

@@ -4,8 +4,9 @@
 //      and where a textPath starts or ends.
 //   2. Each chunk is shaped as a paragraph (text/layout.h): bidi, fonts with
 //      fallback, HarfBuzz; clusters come in visual order.
-//   3. The pen walks the clusters: each cluster's characters' dx and dy move
-//      it first; it then advances by the cluster's advance, letter-spacing and,
+//   3. The pen walks the clusters in visual order; each is moved by the sum
+//      of the dx and dy of the chunk's characters up to its last one, in
+//      logical order; the pen advances by the cluster's advance, letter-spacing and,
 //      after a word separator, word-spacing; textLength spreads what is left
 //      over the gaps between clusters (lengthAdjust="spacing"), or scales
 //      advances and glyphs along the line (spacingAndGlyphs).
@@ -154,8 +155,9 @@ class Layouter {
     const TextContent& c_;
     std::vector<TextStyle> styles_;
     std::vector<std::shared_ptr<const Font>> primary_;
-    Point pen_;      // where the next chunk starts when it gives no x or y
-    Point path_pen_; // the same along a textPath: x a distance, y an offset
+    Point pen_;               // where the next chunk starts when it gives no x or y
+    Point path_pen_;          // the same along a textPath: x a distance, y an offset
+    std::vector<Vec2> shift_; // chunk(): each character's sum of dx and dy, kept between chunks
     std::vector<std::optional<PathMeasure>> measures_; // each textPath's, once needed
     // The last piece of each decoration line (owner, line) in out_, in this chunk.
     std::map<std::pair<std::uint32_t, int>, std::size_t> last_piece_;
@@ -282,14 +284,22 @@ void Layouter::chunk(std::size_t b, std::size_t e) {
     const Point from = path < 0 ? pen_ : path_starts ? Point{0, 0} : path_pen_;
     const Point start{c_.chars[b].x.value_or(from.x),
                       path >= 0 ? from.y : c_.chars[b].y.value_or(from.y)};
+    // dx and dy add up in logical order (SVG 2, 11.8.3, step 4): character
+    // i is moved by the sum of the moves of the chunk's characters up to i,
+    // and a cluster by its last character's; the advances add up in visual
+    // order. (In right-to-left text a dx on the first character moves the
+    // whole chunk, not the cluster drawn last.)
+    shift_.resize(e - b);
+    Vec2 moved{0, 0};
+    for (std::size_t i = b; i < e; ++i)
+        shift_[i - b] = moved = moved + Vec2{c_.chars[i].dx, c_.chars[i].dy};
     Point pen = start;
     for (Cluster& c : cl) {
-        for (std::size_t i = c.begin; i < c.end; ++i)
-            pen = pen + Vec2{c_.chars[i].dx, c_.chars[i].dy};
-        c.pen = pen;
+        c.pen = pen + shift_[c.end - 1 - b];
         const double step = c.advance * c.stretch + c.extra;
         pen = pen + (vert ? Vec2{0, step} : Vec2{step, 0});
     }
+    pen = pen + moved;
     // text-anchor: the chunk moved by its advance, or half of it.
     const double length = vert ? pen.y - start.y : pen.x - start.x;
     // The anchor of the chunk's first character's element; the direction
@@ -370,13 +380,13 @@ void Layouter::place(const std::vector<LaidGlyph>& glyphs, const Cluster& c, con
         const FontMetrics mo = primary_[owner] ? primary_[owner]->metrics() : FontMetrics{};
         const double width = c.advance * c.stretch + c.extra;
         if (d.underline)
-            decorate({owner, 0, width, -mo.underline_position * ko, mo.underline_thickness * ko,
-                      frame});
+            decorate(
+                {owner, 0, width, -mo.underline_position * ko, mo.underline_thickness * ko, frame});
         if (d.overline)
             decorate({owner, 1, width, -mo.ascender * ko, mo.underline_thickness * ko, frame});
         if (d.line_through)
-            decorate({owner, 2, width, -mo.strikeout_position * ko, mo.strikeout_thickness * ko,
-                      frame});
+            decorate(
+                {owner, 2, width, -mo.strikeout_position * ko, mo.strikeout_thickness * ko, frame});
     }
 }
 
