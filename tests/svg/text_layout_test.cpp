@@ -470,6 +470,25 @@ TEST(TextVertical, WritingModeTbAdvancesDownward) {
     EXPECT_LE(all.x1, 100 + half + 1e-9) << str(all);
 }
 
+TEST(TextVertical, UprightGlyphsAreUnderlinedAlongTheLine) {
+    // Upright CJK in vertical text: the underline runs down the line, on its
+    // under (left) side, as under turned Latin glyphs; it used to be drawn
+    // across each glyph's top.
+    const SvgResult r =
+        read(text(R"(x="100" y="20" font-size="20" writing-mode="tb" text-decoration="underline")",
+                  "\xE6\x9C\xAC\xE6\x97\xA5 ab"));
+    ASSERT_TRUE(r.scene) << r.error;
+    const auto sh = shapes(r);
+    ASSERT_GE(sh.size(), 2u);
+    const Rect u = sh[0]->path.bounds(),
+               glyphs = bounds(std::vector<const Shape*>(sh.begin() + 1, sh.end()));
+    EXPECT_LT(u.width(), 0.2 * 20) << str(u);
+    EXPECT_NEAR(u.y0, 20, 1e-9) << str(u);
+    EXPECT_GT(u.height(), 2.5 * 20) << "the two CJK glyphs, the space and the Latin: " << str(u);
+    EXPECT_LT(u.x1, 100) << str(u);
+    EXPECT_GE(glyphs.x1, 100) << str(glyphs);
+}
+
 // --- 7. Bidi -----------------------------------------------------------------
 
 TEST(TextBidi, HebrewRunsRightToLeftInsideLeftToRightText) {

@@ -358,10 +358,12 @@ void Layouter::place(const std::vector<LaidGlyph>& glyphs, const Cluster& c, con
     const double k = unit(c.span);
     const FontMetrics m = primary_[c.span] ? primary_[c.span]->metrics() : FontMetrics{};
     // The cluster's own frame: its origin on its baseline, along the line.
-    Affine frame = at * turn * Affine::translate({0, base});
-    if (vert && !c.upright) // turned: its baseline runs down the line's middle
-        frame = at * turn * Affine::rotate(std::numbers::pi / 2) *
-                Affine::translate({0, (m.ascender + m.descender) / 2 * k});
+    // In vertical text a turned glyph's baseline runs down the line's middle,
+    // and so do the decorations of every glyph, upright ones too.
+    const Affine along = vert ? at * turn * Affine::rotate(std::numbers::pi / 2) *
+                                    Affine::translate({0, (m.ascender + m.descender) / 2 * k})
+                              : at * turn * Affine::translate({0, base});
+    const Affine frame = vert && c.upright ? at * turn * Affine::translate({0, base}) : along;
     double x = 0, y = 0; // the pen within the cluster: across, and down for upright glyphs
     for (std::size_t i = c.g0; i < c.g1; ++i) {
         const LaidGlyph& g = glyphs[i];
@@ -381,12 +383,12 @@ void Layouter::place(const std::vector<LaidGlyph>& glyphs, const Cluster& c, con
         const double width = c.advance * c.stretch + c.extra;
         if (d.underline)
             decorate(
-                {owner, 0, width, -mo.underline_position * ko, mo.underline_thickness * ko, frame});
+                {owner, 0, width, -mo.underline_position * ko, mo.underline_thickness * ko, along});
         if (d.overline)
-            decorate({owner, 1, width, -mo.ascender * ko, mo.underline_thickness * ko, frame});
+            decorate({owner, 1, width, -mo.ascender * ko, mo.underline_thickness * ko, along});
         if (d.line_through)
             decorate(
-                {owner, 2, width, -mo.strikeout_position * ko, mo.strikeout_thickness * ko, frame});
+                {owner, 2, width, -mo.strikeout_position * ko, mo.strikeout_thickness * ko, along});
     }
 }
 
