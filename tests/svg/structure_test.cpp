@@ -252,6 +252,73 @@ TEST(TransformOrigin, TheTransformIsAppliedAboutIt) {
     expect_box(*s[2], {-200, -200, -180, -180}, "about the viewport's corner");
 }
 
+TEST(TransformProperty, CssOverridesTheAttributeAndAnInvalidValueIsIgnored) {
+    // SVG 2, 8.5: the attribute is the presentation attribute of the CSS
+    // transform property; found on WPT's clip-path-css-transform-001, whose
+    // style sheet transform was ignored.
+    const SvgResult r = read(R"svg(<style>#a { transform: translate(20px, 0) }
+          .b { transform: rotate(90) }</style>
+        <rect id="a" width="10" height="10" transform="translate(5 5)"/>
+        <rect width="10" height="10" transform="translate(5 5)" style="transform: none"/>
+        <rect class="b" width="10" height="10" transform="translate(5,5)"/>
+        <rect width="10" height="10" style="transform: scale(2) translateY(1em)"/>
+        <rect width="10" height="10" transform="translate(5px, 1em) rotate(0.25turn)"/>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    const auto s = shapes(*r.scene);
+    ASSERT_EQ(s.size(), 5u);
+    expect_box(*s[0], {20, 0, 30, 10}, "the style sheet's, not the attribute's");
+    expect_box(*s[1], {0, 0, 10, 10}, "none");
+    expect_box(*s[2], {5, 5, 15, 15}, "CSS's rotate needs a unit: the attribute stays");
+    expect_box(*s[3], {0, 32, 20, 52}, "em of the font size, scaled");
+    expect_box(*s[4], {-5, 16, 5, 26}, "units in the attribute, as browsers take them");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].text().find("transform: rotate(): '90' is not an angle"),
+              std::string::npos)
+        << r.warnings[0].text();
+}
+
+TEST(TransformBox, FillBoxIsTheElementsOwnBox) {
+    // rotate(180) about the centre of each one's own box leaves it in place;
+    // translate(50%) moves by half its width.
+    const SvgResult r = read(R"svg(<style>.c { transform-box: fill-box; transform-origin: center }
+        </style>
+        <rect class="c" x="20" y="20" width="60" height="40" transform="rotate(180)"/>
+        <g class="c" style="transform: rotate(180deg)">
+          <rect x="100" y="10" width="20" height="10"/><rect x="140" y="30" width="20" height="20"/></g>
+        <rect class="c" x="10" y="100" width="40" height="10" style="transform: translate(50%)"/>
+        <rect x="10" y="150" width="40" height="10" style="transform: translate(50%)"/>
+        <rect class="c" x="10" y="170" width="20" height="10" stroke="black" stroke-width="4"
+          style="transform-box: stroke-box; transform-origin: 0 0; transform: scale(2)"/>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    EXPECT_TRUE(r.warnings.empty());
+    const auto s = shapes(*r.scene);
+    ASSERT_EQ(s.size(), 6u);
+    expect_box(*s[0], {20, 20, 80, 60}, "a rect turned about its centre");
+    // The group's box is its content's, 100..160 x 10..50, its centre (130, 30).
+    expect_box(*s[1], {140, 40, 160, 50}, "mirrored through the group's centre");
+    expect_box(*s[2], {100, 10, 120, 30}, "the other, mirrored too");
+    expect_box(*s[3], {30, 100, 70, 110}, "half its own width");
+    expect_box(*s[4], {110, 150, 150, 160}, "view-box: half the viewport's width");
+    // The stroke box's corner (8, 168) stays; the rect doubles from there.
+    expect_box(*s[5], {12, 172, 52, 192}, "about the stroke box's corner");
+}
+
+TEST(TransformBox, NestedFillBoxGroupsAreMeasuredOnceEach) {
+    // Each group measures what it draws by walking it once; without the
+    // measured boxes kept, 40 nested groups would walk the leaf 2^40 times.
+    std::string body;
+    for (int i = 0; i < 40; ++i)
+        body += R"svg(<g style="transform-box: fill-box; transform-origin: center;
+            transform: rotate(180deg)">)svg";
+    body += R"(<rect x="10" y="20" width="30" height="10"/>)";
+    for (int i = 0; i < 40; ++i) body += "</g>";
+    const SvgResult r = read(body);
+    ASSERT_TRUE(r.scene) << r.error;
+    const auto s = shapes(*r.scene);
+    ASSERT_EQ(s.size(), 1u);
+    expect_box(*s[0], {10, 20, 40, 30}, "turned 40 times about its own centre");
+}
+
 TEST(ContextPaint, MarkersTakeTheirShapesPaintsAndUsesTheirOwn) {
     // SVG 2, 13.3: in a marker, the shape it is on; under a use, the use.
     const SvgResult r = read(R"svg(<defs>

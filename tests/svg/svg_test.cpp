@@ -36,6 +36,35 @@ TEST(TransformList, EveryFunctionAndErrors) {
         EXPECT_FALSE(parse_transform_list(bad).error.empty()) << bad;
 }
 
+TEST(TransformList, CssSyntaxAndTheAttributesUnits) {
+    // Where (1, 1) goes, with percentages of a 200 x 100 box.
+    const auto expect_at = [](std::string_view text, TransformSyntax syntax, Point want) {
+        const TransformParse p = parse_transform(text, syntax, LengthContext{});
+        EXPECT_TRUE(p.error.empty()) << text << ": " << p.error;
+        const Point got = p.value.at(200, 100) * Point{1, 1};
+        EXPECT_NEAR(got.x, want.x, 1e-12) << text;
+        EXPECT_NEAR(got.y, want.y, 1e-12) << text;
+    };
+    const auto css = TransformSyntax::Css, attr = TransformSyntax::Attribute;
+    expect_at("translate(10px, 1in)", css, {11, 97});
+    expect_at("TRANSLATEX(50%) scaleY(200%)", css, {101, 2});
+    expect_at("translate(0) scale(2,3)", css, {2, 3});
+    expect_at("none", css, {1, 1});
+    expect_at("skew(0, 45deg)", css, {1, 2});
+    expect_at("translate(5px,5px)", attr, {6, 6});
+    expect_at("translate(1 2)scale(2)", attr, {3, 4});
+    expect_at("rotate(0.5turn)", attr, {-1, -1});
+    expect_at("", attr, {1, 1});
+    for (const char* bad :
+         {"translate(10, 20)", "translate(10px 20px)", "rotate(90)", "translate(1px,,2px)",
+          "translate(1px),scale(2)", "rotate(90deg 1 2)", "", "matrix(1,0,0,1,0,0px)"})
+        EXPECT_FALSE(parse_transform(bad, css, LengthContext{}).error.empty()) << bad;
+    for (const char* bad : {"translate(5pz)", "rotate(1 2 3 4)", "scale(1deg)", "translate(,1)",
+                            "translate(1,)", "translate(1,,2)"})
+        EXPECT_FALSE(parse_transform(bad, attr, LengthContext{}).error.empty()) << bad;
+    EXPECT_FALSE(parse_transform_list("translate(50%)").error.empty()) << "no box there";
+}
+
 TEST(Style, InheritanceAndStylePrecedence) {
     const SvgResult r = parse(R"(<g fill="red" fill-rule="evenodd" opacity="1">
       <rect width="10" height="10" style="fill: blue; fill-opacity: 50%"/>

@@ -173,6 +173,7 @@ StyleState Reader::style_of(const pugi::xml_node& n, ElementProps& props) {
     for (pugi::xml_node a = n; a && a.type() == pugi::node_element; a = a.parent())
         chain.push_back(a);
     StyleState s;
+    const bool quiet = quiet_; // fill_box's walk is quiet throughout
     quiet_ = true;
     for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
         StyleState next = s;
@@ -181,7 +182,7 @@ StyleState Reader::style_of(const pugi::xml_node& n, ElementProps& props) {
         apply_declarations(*it, s, next, &props, context(next));
         s = std::move(next);
     }
-    quiet_ = false;
+    quiet_ = quiet;
     return s;
 }
 

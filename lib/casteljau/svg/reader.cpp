@@ -119,9 +119,10 @@ Scene Reader::read() {
     if (const std::size_t n = expanded_size(root, 0); n > options_.max_elements)
         fail(root, "more than " + std::to_string(options_.max_elements) +
                        " elements once <use> is expanded (the limit)");
-    walk(root, style, *view, scene.root, 1);
+    const Affine m = root_transform(props, scene.width, scene.height) * *view;
+    walk(root, style, m, scene.root, 1);
     Group top{props.opacity, std::move(scene.root.children)};
-    if (has_effects(props)) apply_effects(root, props, *view, top, 1);
+    if (has_effects(props)) apply_effects(root, props, m, top, 1);
     scene.root = {};
     add_group(scene.root, std::move(top));
     return scene;
@@ -134,8 +135,8 @@ Scene Reader::read() {
 // as in browsers' <img> and librsvg; with neither absolute, each is that
 // fraction (auto: all) of the viewBox's size, or of 100 x 100 without a
 // viewBox (resvg's default). Then the viewBox mapping (SVG 1.1, 7.7 and
-// 7.8), and the root's transform. Nothing to draw (nullopt) when the viewBox
-// is zero-sized.
+// 7.8; the root's own transform goes before it, root_transform). Nothing to
+// draw (nullopt) when the viewBox is zero-sized.
 std::optional<Affine> Reader::viewport(const pugi::xml_node& root, Scene& scene,
                                        const LengthContext& ctx) {
     const std::optional<ViewBox> box = view_box(root);
@@ -167,41 +168,20 @@ std::optional<Affine> Reader::viewport(const pugi::xml_node& root, Scene& scene,
     vw_ = box ? box->w : scene.width;
     vh_ = box ? box->h : scene.height;
     // A stop's stop-color and stop-opacity come from the cascade; its
-    // currentColor is its computed color (style_of is quiet, and leaves
-    // quiet_ cleared: restored, should a gradient be resolved while quiet).
+    // currentColor is its computed color (style_of, quiet).
     gradients_.emplace(root, vw_, vh_,
                        GradientStyle{[this](const pugi::xml_node& n, const char* property) {
                                          return declarations(n, property);
                                      },
                                      [this](const pugi::xml_node& n) {
-                                         const bool quiet = quiet_;
                                          ElementProps props;
-                                         const Rgba color = style_of(n, props).color;
-                                         quiet_ = quiet;
-                                         return color;
+                                         return style_of(n, props).color;
                                      }});
     if (box && (box->w == 0 || box->h == 0)) {
         warn(root, "viewBox: a zero width or height disables rendering");
         return std::nullopt;
     }
-    const Affine view = box ? view_map(root, *box, scene.width, scene.height) : Affine::identity();
-    // The root's own transform (SVG 2 allows one on the outermost svg; CSS
-    // Transforms 1) applies in the viewport's pixels, around its
-    // transform-origin, which there is 50% 50% of the viewport (browsers' UA
-    // style sheet makes it 0 0 only for an svg inside another element).
-    const pugi::xml_attribute t = root.attribute("transform");
-    if (!t) return view;
-    const TransformResult tr = parse_transform_list(t.value());
-    if (!tr.error.empty()) {
-        problem(root, "transform: " + tr.error + "; ignored");
-        return view;
-    }
-    LengthContext in_pixels = ctx;
-    in_pixels.viewport_w = scene.width, in_pixels.viewport_h = scene.height;
-    Vec2 o{scene.width / 2, scene.height / 2};
-    for (const std::string& v : declarations(root, "transform-origin"))
-        if (const auto origin = parse_transform_origin(v, in_pixels)) o = *origin;
-    return Affine::translate(o) * tr.transform * Affine::translate(-o) * view;
+    return box ? view_map(root, *box, scene.width, scene.height) : Affine::identity();
 }
 
 // The element's viewBox: nullopt when absent, or in error (a problem; the
@@ -282,6 +262,10 @@ void Reader::apply_declarations(const pugi::xml_node& n, const StyleState& paren
         // properties it resets in the second, in their cascade order.
         const bool shorthand = name == "font";
         if (!shorthand && (name == "font-size") == (props != nullptr)) return;
+        if (name == "transform") {
+            if (props) take_transform(n, value, from, *props, ctx);
+            return;
+        }
         const double size = style.font_size;
         const std::string e =
             apply_property(name, value, parent, style, props ? *props : unused, ctx);
@@ -383,15 +367,10 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
         props.isolate = false;
         props.filter.clear(); // a clip path is the shapes' geometry (CSS Masking 1, 6.1)
     }
-    Affine m = ctm;
-    if (const pugi::xml_attribute t = n.attribute("transform")) {
-        const TransformResult tr = parse_transform_list(t.value());
-        const Vec2 o = props.transform_origin;
-        if (tr.error.empty())
-            m = ctm * Affine::translate(o) * tr.transform * Affine::translate(-o);
-        else
-            problem(n, "transform: " + tr.error + "; ignored");
-    }
+    // fill_box() walks the element it measures untransformed.
+    const Affine m = props.transform && n != measuring_
+                         ? ctm * own_transform(n, name, parent_style, style, props, depth)
+                         : ctm;
     Group g{props.opacity, {}};
     if (group) {
         walk(n, style, m, g, depth + 1);

@@ -211,7 +211,7 @@ std::optional<double> parse_font_size(std::string_view v, double parent, const L
 // transform-origin: one to three values, each a length, a percentage or a
 // keyword (left, center, right for x; top, center, bottom for y; a single y
 // keyword leaves x at center), the third (z) ignored in 2D.
-std::optional<Vec2> parse_transform_origin(std::string_view v, const LengthContext& ctx) {
+std::optional<BoxPoint> parse_transform_origin(std::string_view v, const LengthContext& ctx) {
     std::vector<std::string_view> words;
     for (std::size_t i = 0; i < v.size();) {
         while (i < v.size() && std::isspace(static_cast<unsigned char>(v[i]))) ++i;
@@ -228,27 +228,31 @@ std::optional<Vec2> parse_transform_origin(std::string_view v, const LengthConte
         if (w == "center") return std::pair{'c', 0.5};
         return std::nullopt;
     };
-    double f[2] = {0.5, 0.5};
+    double px[2] = {0, 0}, fraction[2] = {0.5, 0.5};
     bool set[2] = {false, false};
     for (std::size_t i = 0; i < std::min<std::size_t>(words.size(), 2); ++i) {
         if (const auto k = keyword(words[i])) {
             // A y keyword first ("top left") puts the other value on x.
             const int axis = k->first == 'y' || (k->first == 'c' && set[0]) ? 1 : 0;
             if (set[axis]) return std::nullopt;
-            f[axis] = k->second * (axis ? ctx.viewport_h : ctx.viewport_w);
+            fraction[axis] = k->second;
             set[axis] = true;
             continue;
         }
         const int axis = set[0] ? 1 : int(i);
-        const auto len = parse_length(words[i], axis ? ctx.viewport_h : ctx.viewport_w, ctx);
-        if (!len || set[axis]) return std::nullopt;
-        f[axis] = *len;
+        if (set[axis]) return std::nullopt;
+        // A percentage as a fraction of the box (100% of 1), a length as is.
+        if (const auto f = parse_length(words[i], 1, ctx); f && words[i].back() == '%') {
+            fraction[axis] = *f;
+        } else if (const auto len = parse_length(words[i], 0, ctx); len && words[i].back() != '%') {
+            px[axis] = *len, fraction[axis] = 0;
+        } else {
+            return std::nullopt;
+        }
         set[axis] = true;
     }
-    for (int a = 0; a < 2; ++a)
-        if (!set[a]) f[a] = 0.5 * (a ? ctx.viewport_h : ctx.viewport_w);
     if (words.size() == 3 && !parse_length(words[2], 0, ctx)) return std::nullopt;
-    return Vec2{f[0], f[1]};
+    return BoxPoint{{px[0], px[1]}, {fraction[0], fraction[1]}};
 }
 
 namespace {
@@ -392,8 +396,16 @@ std::string apply_property(std::string_view name, std::string_view value, const 
                                         {"optimizeSpeed", false}}),
                    "auto, optimizeSpeed, crispEdges or geometricPrecision");
     if (name == "transform-origin")
-        return set(props.transform_origin, Vec2{}, parse_transform_origin(value, ctx),
-                   "a transform origin");
+        return set(props.transform_origin, std::optional<BoxPoint>(),
+                   parse_transform_origin(value, ctx), "a transform origin");
+    if (name == "transform-box")
+        return set(props.transform_box, TransformBox::ViewBox,
+                   lookup<TransformBox>(value, {{"view-box", TransformBox::ViewBox},
+                                                {"fill-box", TransformBox::FillBox},
+                                                {"content-box", TransformBox::FillBox},
+                                                {"stroke-box", TransformBox::StrokeBox},
+                                                {"border-box", TransformBox::StrokeBox}}),
+                   "view-box, fill-box, stroke-box, content-box or border-box");
     constexpr const char* kReference = "none or url(#id)";
     if (name == "clip-path")
         return set(props.clip_path, std::string(), parse_reference(value), kReference);

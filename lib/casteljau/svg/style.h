@@ -24,6 +24,7 @@
 #include "casteljau/raster/sweep.h"
 #include "casteljau/scene/scene.h"
 #include "casteljau/svg/text_properties.h"
+#include "casteljau/svg/transform_list.h"
 
 #include <array>
 #include <optional>
@@ -89,14 +90,24 @@ struct StyleState {
     TextProps own_text;
 };
 
+/// transform-box's boxes for SVG elements (CSS Transforms 1, 6.1):
+/// content-box is the fill box and border-box the stroke box there.
+enum class TransformBox { ViewBox, FillBox, StrokeBox };
+
 /// Not inherited: reset for every element.
 struct ElementProps {
     float opacity = 1;
     bool display_none = false;
+    /// transform (CSS Transforms 1, 7; SVG 2, 8.5): the attribute or the
+    /// CSS property, whichever the cascade takes; nullopt for none.
+    std::optional<TransformSteps> transform;
     /// transform-origin (CSS Transforms 1, 6): the point the transform is
-    /// applied about, in user units; percentages and keywords of the
-    /// viewport (SVG's default transform-box, view-box). Initially 0 0.
-    Vec2 transform_origin;
+    /// applied about, its percentages and keywords of the reference box;
+    /// nullopt for the initial value (0 0 in SVG, 50% 50% on the root).
+    std::optional<BoxPoint> transform_origin;
+    /// transform-box (CSS Transforms 1, 6.1): the reference box of
+    /// transform-origin and of translate()'s percentages.
+    TransformBox transform_box = TransformBox::ViewBox;
     /// vector-effect: non-scaling-stroke (the other SVG 2 values are valid
     /// and, as in browsers, do nothing).
     bool non_scaling_stroke = false;
@@ -143,9 +154,9 @@ std::optional<double> parse_length(std::string_view text, double percent_of = 0,
                                    const LengthContext& ctx = {});
 
 /// transform-origin (CSS Transforms 1, 6): one to three values, each a length,
-/// a percentage of ctx's viewport or a keyword; the third (z) is ignored in
-/// 2D. nullopt when invalid.
-std::optional<Vec2> parse_transform_origin(std::string_view v, const LengthContext& ctx);
+/// a percentage of the reference box or a keyword; the third (z) is ignored
+/// in 2D. nullopt when invalid.
+std::optional<BoxPoint> parse_transform_origin(std::string_view v, const LengthContext& ctx);
 
 /// A font-size: a keyword (xx-small to xxx-large, larger, smaller) or a
 /// non-negative length, em and % of `parent` (the parent's font size);

@@ -170,6 +170,15 @@ class Reader {
     }
     void element(const pugi::xml_node& n, const StyleState& parent_style, const Affine& ctm,
                  Group& out, int depth);
+    // transform, transform-origin and transform-box (svg/element_transform.cpp).
+    void take_transform(const pugi::xml_node& n, std::string_view value, const char* from,
+                        ElementProps& props, const LengthContext& ctx);
+    Affine own_transform(const pugi::xml_node& n, std::string_view name,
+                         const StyleState& parent_style, const StyleState& style,
+                         const ElementProps& props, int depth);
+    Rect fill_box(const pugi::xml_node& n, std::string_view name, const StyleState& parent_style,
+                  const StyleState& style, bool stroke, int depth);
+    Affine root_transform(const ElementProps& props, double width, double height) const;
     void use(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out,
              int depth);
     void nested_viewport(const pugi::xml_node& n, const pugi::xml_node& sizes,
@@ -300,6 +309,8 @@ class Reader {
     std::map<std::string, pugi::xml_node> ids_; // built at the first <use>
     std::vector<pugi::xml_node> instancing_;    // the <use> targets being drawn
     std::map<const void*, std::size_t> sizes_;
+    std::map<const void*, Rect> fill_boxes_; // transform-box: fill-box, measured once an element
+    pugi::xml_node measuring_;               // the element fill_box is walking, drawn untransformed
     StyleSheet sheet_;
     PugiCssTree css_tree_;
     std::unique_ptr<CssMatcher> matcher_; // none without style sheets
