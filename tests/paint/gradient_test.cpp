@@ -7,6 +7,7 @@
 #include "casteljau/svg/reader.h"
 #include "corpus.h"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <vector>
@@ -54,6 +55,32 @@ TEST(Gradient, RadialParameterIsTheFractionFromFocalToCircle) {
         const Point on_circle = g.center + Vec2{std::cos(b), std::sin(b)} * g.radius;
         EXPECT_NEAR(sh.parameter(lerp(g.focal, on_circle, lambda)), lambda, 1e-9) << i;
         EXPECT_NEAR(sh.parameter(g.focal), 0.0, 1e-9) << i;
+    }
+}
+
+TEST(Gradient, AFocalRadiusStartsTheGradientOnItsCircle) {
+    // SVG 2's fr: t is the fraction of the way from the start circle (f, r0)
+    // to the end circle (c, r), on the circle between them.
+    testing::Rng rng(92);
+    for (int i = 0; i < 200; ++i) {
+        Gradient g = two_stops(Gradient::Kind::Radial, Spread::Reflect);
+        g.center = rng.point(100);
+        g.radius = rng.uniform(5, 50);
+        g.focal_radius = rng.uniform(0, 0.8) * g.radius;
+        const double a = rng.uniform(0, 6.28);
+        const double rf = rng.uniform(0, 0.9) * (g.radius - g.focal_radius);
+        g.focal = g.center + Vec2{std::cos(a), std::sin(a)} * rf;
+        GradientShader sh;
+        ASSERT_TRUE(sh.prepare(g, Affine::identity(), 1));
+        // Down to the circle of radius 0, at t = -r0 / (r - r0), or to t = -1
+        // (reflected: |t|).
+        const double lambda =
+            rng.uniform(std::max(-1.0, -g.focal_radius / (g.radius - g.focal_radius)), 1);
+        const double b = rng.uniform(0, 6.28);
+        const Point p = lerp(g.focal, g.center, lambda) +
+                        Vec2{std::cos(b), std::sin(b)} *
+                            (g.focal_radius + lambda * (g.radius - g.focal_radius));
+        EXPECT_NEAR(sh.parameter(p), std::fabs(lambda), 1e-9) << i;
     }
 }
 
@@ -125,6 +152,7 @@ TEST(Gradient, RowsShadeTheTableEntryNearestEachPixelsParameter) {
         g.p1 = rng.point(200), g.p2 = rng.point(200);
         g.center = rng.point(200), g.radius = rng.uniform(5, 150);
         g.focal = g.center + Vec2{rng.uniform(-1, 1), rng.uniform(-1, 1)} * (0.5 * g.radius);
+        g.focal_radius = trial % 4 == 1 ? rng.uniform(0, 0.25) * g.radius : 0;
         const Affine m = Affine::rotate(rng.uniform(0, 6.28)) * Affine::scale(rng.uniform(0.3, 3));
         GradientShader sh;
         ASSERT_TRUE(sh.prepare(g, trial % 3 ? Affine::identity() : m, 1));
@@ -154,6 +182,20 @@ TEST(SvgGradient, BoundingBoxAndUserSpaceUnits) {
             </linearGradient><rect x="50" width="100" height="20" fill="url(#g)"/></svg>)svg");
         for (int x : {50, 75, 100, 149})
             EXPECT_NEAR(c.row(10)[x].r, (float(x) + 0.5f - 50) / 100, 1.5e-3f) << u << " x " << x;
+    }
+}
+
+TEST(SvgGradient, FocalRadiusIsTheFirstStopsCircle) {
+    // fr = 50 about the centre: a disc of radius 50 in the first stop, then
+    // black to white out to r = 100 (WPT's radialgradient-basic-002 drew a
+    // point there, fr ignored).
+    const Canvas c = render(R"svg(<svg width="220" height="220">
+        <radialGradient id="g" cx="110" cy="110" r="100" fr="50" gradientUnits="userSpaceOnUse">
+        <stop offset="0" stop-color="black"/><stop offset="1" stop-color="white"/></radialGradient>
+        <rect width="220" height="220" fill="url(#g)"/></svg>)svg");
+    for (const int d : {0, 20, 45, 60, 75, 90}) {
+        const float t = std::clamp((float(d) + 0.5f - 50) / 50, 0.0f, 1.0f);
+        EXPECT_NEAR(c.row(110)[110 + d].r, t, 2e-3f) << "distance " << d;
     }
 }
 

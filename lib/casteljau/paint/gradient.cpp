@@ -37,20 +37,42 @@ Rgba lerp(Rgba a, Rgba b, float t) {
 
 /// The parameter before spread at gradient-space point q (the formulas above);
 /// inlined by force into the radial loop of shade(), as it runs once a pixel.
-[[gnu::always_inline]] inline double raw_parameter(const Gradient& g, Point focal, Point q) {
+[[gnu::always_inline]] inline double raw_parameter(const Gradient& g,
+                                                   const GradientShader::RadialForm& r, Point q) {
     if (g.kind == Gradient::Kind::Linear) {
         const Vec2 axis = g.p2 - g.p1;
         const double len_sq = axis.length_sq();
         return len_sq > 0 ? (q - g.p1).dot(axis) / len_sq : 1.0; // coincident points: the last stop
     }
-    const Vec2 d = q - focal, e = g.center - focal;
-    const double a = e.length_sq() - g.radius * g.radius; // < 0: focal inside
-    const double de = d.dot(e);
     if (g.radius <= 0) return 1.0; // zero radius: the last stop (13.2.3)
-    return (de - std::sqrt(std::max(0.0, de * de - a * d.length_sq()))) / a;
+    const Vec2 d = q - r.focal, e = r.center - r.focal;
+    const double a = e.length_sq() - r.dr * r.dr; // < 0: the start circle inside
+    const double b = d.dot(e) + r.r0 * r.dr;
+    const double t = (b - std::sqrt(std::max(0.0, b * b - a * (d.length_sq() - r.r0 * r.r0)))) / a;
+    return r.t0 + r.t1 * t;
 }
 
 } // namespace
+
+GradientShader::RadialForm GradientShader::radial_form(const Gradient& g) {
+    // A start circle larger than the end circle is the same family of
+    // circles run the other way (SVG 2, 14.3.4's larger t over smaller t,
+    // with one circle holding the other): swapped, and t read as 1 - t.
+    RadialForm r{g.focal, g.center, std::max(g.focal_radius, 0.0), g.radius, 0, 1};
+    double r1 = g.radius;
+    if (r.r0 > r1) {
+        std::swap(r.focal, r.center), std::swap(r.r0, r1);
+        r.t0 = 1, r.t1 = -1;
+    }
+    // 13.2.3: a focal point outside the circle moves onto it; 0.999 keeps
+    // the start circle inside, so that the quadratic has its single root on
+    // a circle of positive radius (top of the file).
+    r.r0 = std::min(r.r0, 0.999 * r1), r.dr = r1 - r.r0;
+    const Vec2 e = r.focal - r.center;
+    const double limit = 0.999 * r.dr;
+    if (e.length() > limit) r.focal = r.center + e * (limit / e.length());
+    return r;
+}
 
 bool GradientShader::prepare(const Gradient& g, const Affine& to_device, float opacity,
                              bool linear_light) {
@@ -69,14 +91,7 @@ bool GradientShader::prepare(const Gradient& g, const Affine& to_device, float o
                                       (m.c * axis.x + m.d * axis.y) / len_sq,
                                       ((m.e - g.p1.x) * axis.x + (m.f - g.p1.y) * axis.y) / len_sq}
                          : LinearForm{0, 0, 1};
-    focal_ = g.focal;
-    if (g.kind == Gradient::Kind::Radial) {
-        // 13.2.3: a focal point outside the circle moves onto it; 0.999 keeps it
-        // inside so that the quadratic above has its single positive root.
-        const Vec2 e = g.focal - g.center;
-        const double limit = 0.999 * g.radius;
-        if (e.length() > limit) focal_ = g.center + e * (limit / e.length());
-    }
+    if (g.kind == Gradient::Kind::Radial) radial_ = radial_form(g);
     // The table depends on the stops, the opacity and the space only: a
     // shader asked for the same ones again (the next band, or the next shape
     // sharing the gradient) keeps its table.
@@ -115,7 +130,7 @@ void GradientShader::build_table(const Gradient& g, float opacity, bool linear_l
 }
 
 double GradientShader::parameter(Point p) const {
-    return spread(raw_parameter(*g_, focal_, inverse_ * p), g_->spread);
+    return spread(raw_parameter(*g_, radial_, inverse_ * p), g_->spread);
 }
 
 Premul GradientShader::at(int x, int y) const {
@@ -156,15 +171,21 @@ void GradientShader::shade_radial(int x, int y, int n, Premul* out) const {
     // (m.a X, m.b X) plus a row constant, and the per-shader constants
     // (e, a and 1 / a) leave the loop.
     const Affine& m = inverse_;
-    const Vec2 e = g.center - focal_;
-    const double a = e.length_sq() - g.radius * g.radius, inv_a = 1 / a;
+    const RadialForm& r = radial_;
+    const Vec2 e = r.center - r.focal;
+    const double a = e.length_sq() - r.dr * r.dr, inv_a = 1 / a;
+    const double r0dr = r.r0 * r.dr, r0_sq = r.r0 * r.r0;
+    // t0 + t1 t' folded into the division's factor: exact for the usual
+    // (0, 1), which keeps every pixel as it was before fr.
+    const double scale = r.t1 * inv_a;
     const double cy = y + 0.5;
-    const Vec2 row{m.c * cy + m.e - focal_.x, m.d * cy + m.f - focal_.y};
+    const Vec2 row{m.c * cy + m.e - r.focal.x, m.d * cy + m.f - r.focal.y};
     for (int i = 0; i < n; ++i) {
         const double cx = x + i + 0.5;
         const Vec2 d{m.a * cx + row.x, m.b * cx + row.y};
-        const double de = d.dot(e);
-        const double t = (de - std::sqrt(std::max(0.0, de * de - a * d.length_sq()))) * inv_a;
+        const double b = d.dot(e) + r0dr;
+        const double t =
+            r.t0 + (b - std::sqrt(std::max(0.0, b * b - a * (d.length_sq() - r0_sq)))) * scale;
         out[i] = lut_[entry(spread(t, S))];
     }
 }

@@ -6,14 +6,22 @@
 // parameter t is
 //   linear: the projection of g onto p1 -> p2, t = (g - p1).(p2 - p1) / |p2 - p1|^2
 //   radial: the t for which g lies on the circle interpolated between the
-//           focal point (radius 0, t = 0) and the end circle (centre c, radius
-//           r, t = 1): |g - f - t (c - f)| = t r, the positive root of
-//           (e.e - r^2) t^2 - 2 (d.e) t + d.d = 0 with d = g - f, e = c - f;
-//           with f strictly inside the circle (e.e < r^2) exactly one root is
-//           positive: t = (d.e - sqrt((d.e)^2 - (e.e - r^2) d.d)) / (e.e - r^2).
+//           start circle (centre f, the focal point, radius r0 = fr; t = 0)
+//           and the end circle (centre c, radius r; t = 1):
+//           |g - f - t (c - f)| = r0 + t (r - r0), the larger root of
+//           (e.e - dr^2) t^2 - 2 (d.e + r0 dr) t + d.d - r0^2 = 0 with
+//           d = g - f, e = c - f, dr = r - r0, where the circle's radius is
+//           >= 0 (SVG 2, 14.3.4). With the start circle strictly inside the
+//           end circle (|e| < dr, so a = e.e - dr^2 < 0) every point lies on
+//           exactly one of those circles:
+//           t = (b - sqrt(b^2 - a (d.d - r0^2))) / a, b = d.e + r0 dr.
 // then spread (13.2.4): pad clamps t to [0, 1], repeat takes t - floor(t),
 // reflect folds t with period 2. A focal point outside the end circle is moved
-// onto it (13.2.3), and then just inside, where the root above stays defined.
+// onto it (SVG 1.1, 13.2.3), and then just inside, where the root above stays
+// defined; so is the start circle (its centre within r - fr of the end
+// circle's). A start circle larger than the end circle holds it instead: the
+// same circles, run from the other end. SVG 2's cones, where neither circle
+// holds the other, are not drawn: the smaller circle is moved inside.
 //
 // Colors between stops are interpolated unpremultiplied (SVG 2, 13.2.4's stop
 // colors; browsers, librsvg and resvg interpolate straight colors) in
@@ -47,6 +55,7 @@ struct Gradient {
     Point p1{0, 0}, p2{1, 0};                ///< linear
     Point center{0.5, 0.5}, focal{0.5, 0.5}; ///< radial
     double radius = 0.5;                     ///< radial
+    double focal_radius = 0;                 ///< radial: fr, the start circle's
     Affine transform;                        ///< gradientTransform
     bool object_bounding_box = true;         ///< gradientUnits
     Spread spread = Spread::Pad;
@@ -60,6 +69,15 @@ inline constexpr int kGradientLut = 1024;
 /// the geometry, and the color table.
 class GradientShader {
   public:
+    /// A radial gradient's circles as drawn (top of the file): clamped, and
+    /// swapped where the start circle is the larger one (t = t0 + t1 t').
+    struct RadialForm {
+        Point focal, center;   ///< the start and the end circle's centres
+        double r0 = 0, dr = 0; ///< the start circle's radius, and r - r0
+        double t0 = 0, t1 = 1; ///< (1, -1) when swapped
+    };
+    /// The circles of radial gradient g as drawn.
+    static RadialForm radial_form(const Gradient& g);
     /// `to_device` maps gradient space to device pixels (user transform,
     /// bounding box and gradientTransform composed). False when that map is
     /// singular or the gradient has no stops: then nothing is painted.
@@ -92,7 +110,7 @@ class GradientShader {
     bool lut_linear_ = false;
     Affine inverse_;
     LinearForm linear_;
-    Point focal_;
+    RadialForm radial_;
     std::array<Premul, kGradientLut> lut_{};
 };
 

@@ -139,6 +139,11 @@ GradientRef GradientIndex::build(pugi::xml_node node) {
             g->radius = 0.5 * d;
         }
         g->focal = {get("fx", g->center.x, vw_), get("fy", g->center.y, vh_)};
+        g->focal_radius = get("fr", 0, diag);
+        if (g->focal_radius < 0) {
+            invalid("fr", "a negative radius is an error; 0 is used");
+            g->focal_radius = 0;
+        }
     }
     // Stops from the first gradient of the chain that has any.
     for (const pugi::xml_node& n : chain) {
