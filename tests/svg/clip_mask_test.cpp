@@ -104,6 +104,53 @@ TEST(ClipPath, AMissingReferenceIsIgnoredAndACycleDrawsNothing) {
     EXPECT_FALSE(w.empty());
 }
 
+TEST(ClipPath, ABasicShapeClipsAsTheSameOutlineInAClipPath) {
+    // Found on WPT's clip-path-shape-circle-001 and -inset-001: basic shapes
+    // were ignored. Each against a clipPath of the outline it stands for, on
+    // a 60 x 40 rectangle at (10, 20) (its box's centre (40, 40)).
+    const struct {
+        const char *shape, *outline;
+    } cases[] = {
+        {"circle()", R"svg(<circle cx="40" cy="40" r="20"/>)svg"},
+        {"ellipse(farthest-side closest-side at 25% 50%)",
+         R"svg(<ellipse cx="25" cy="40" rx="45" ry="20"/>)svg"},
+        {"inset(5px 10% round 4px / 2px)",
+         R"svg(<rect x="16" y="25" width="48" height="30" rx="4" ry="2"/>)svg"},
+        {"polygon(evenodd, 0 0, 100% 0, 50% 100%, 0 50%, 100% 50%)",
+         R"svg(<polygon points="10 20 70 20 40 60 10 40 70 40" clip-rule="evenodd"/>)svg"},
+        {"path('M 0 0 H 30 V 20 Z')", R"svg(<path d="M10 20 H40 V40 Z"/>)svg"},
+        {"view-box inset(10px)", R"svg(<rect x="10" y="10" width="80" height="80"/>)svg"},
+    };
+    for (const auto& [shape, outline] : cases) {
+        const std::string rect =
+            R"svg(<rect x="10" y="20" width="60" height="40" fill="#3366cc" )svg";
+        const Canvas by_shape = render(rect + "clip-path=\"" + shape + "\"/>");
+        const Canvas by_clip = render("<clipPath id=\"c\">" + std::string(outline) + "</clipPath>" +
+                                      rect + "clip-path=\"url(#c)\"/>");
+        EXPECT_LE(max_difference(by_shape, by_clip), 1.0f / 255) << shape;
+        float most = 0; // and not by drawing nothing in both
+        for (int y = 0; y < 100; ++y)
+            for (int x = 0; x < 100; ++x) most = std::max(most, by_shape.row(y)[x].a);
+        EXPECT_GT(most, 0.99f) << shape;
+    }
+}
+
+TEST(ClipPath, ABasicShapesBoxIsTheStrokeBoxUnlessItSaysOtherwise) {
+    // inset(0) of the stroke box (border-box, the initial box) clips nothing
+    // of a square's stroke; of the fill box, its outer half.
+    const std::string square =
+        R"svg(<rect x="30" y="30" width="40" height="40" fill="none" stroke="black" stroke-width="10" )svg";
+    const Canvas whole = render(square + "/>");
+    EXPECT_EQ(max_difference(render(square + R"svg(clip-path="inset(0)"/>)svg"), whole), 0.0f);
+    const Canvas inner = render(square + R"svg(clip-path="fill-box"/>)svg");
+    EXPECT_EQ(inner.row(50)[27].a, 0.0f) << "outside the fill box";
+    EXPECT_GT(inner.row(50)[32].a, 0.99f) << "inside it";
+    std::vector<SvgDiagnostic> warnings;
+    render(square + R"svg(clip-path="circle(50)"/>)svg", 100, &warnings);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].text().find("a basic shape"), std::string::npos) << warnings[0].text();
+}
+
 TEST(Mask, LuminanceAndAlpha) {
     // A mask of gray g scales by its luminance, 0.2125 r + 0.7154 g + 0.0721 b
     // of the sRGB-encoded values; mask-type: alpha by its alpha.

@@ -17,10 +17,15 @@
 // the mask masks its content. An objectBoundingBox unit on an element
 // whose box has no area makes the clip or mask empty: nothing is drawn.
 //
+// A basic shape (circle(), inset(), ...; svg/basic_shape.h) or a geometry
+// box as clip-path becomes an alpha mask of that one outline, in the
+// element's user space, its reference box taken from what the element draws.
+//
 // A reference to no such element, or to one of the wrong kind, is a problem
 // and is ignored (the element is drawn unclipped, as librsvg and Chrome
 // do); a reference back to a clip path or mask being resolved (a cycle) is
 // a problem, and the element is not drawn.
+#include "casteljau/svg/basic_shape.h"
 #include "casteljau/svg/detail/reader_impl.h"
 #include "casteljau/svg/shapes.h"
 #include "casteljau/svg/transform_list.h"
@@ -40,13 +45,20 @@ Rect shape_box(const Shape& s, const Affine& to_user) {
 
 } // namespace
 
-Rect Reader::user_bbox(const Group& g, const Affine& to_user) {
+Rect Reader::user_bbox(const Group& g, const Affine& to_user, bool strokes) {
     Rect r = Rect::empty();
     for (const Node& n : g.children) {
-        if (const Shape* s = std::get_if<Shape>(&n.item))
-            r = r.united(shape_box(*s, to_user));
-        else
-            r = r.united(user_bbox(std::get<Group>(n.item), to_user));
+        if (const Shape* s = std::get_if<Shape>(&n.item)) {
+            Rect b = shape_box(*s, to_user);
+            // Half the width on every side: the stroke box without its
+            // miters and caps (CSS Masking 1's stroke-box, approximated).
+            if (strokes && s->stroke && !b.is_empty())
+                b = b.inflated(0.5 * s->stroke->geometry.width *
+                               (to_user * s->transform).max_scale());
+            r = r.united(b);
+        } else {
+            r = r.united(user_bbox(std::get<Group>(n.item), to_user, strokes));
+        }
     }
     return r;
 }
@@ -83,15 +95,31 @@ std::shared_ptr<const Mask> Reader::viewport_clip(const Group& content, const Re
 }
 
 std::shared_ptr<const Mask> Reader::rect_clip(const Rect& r, const Affine& m) {
+    return path_clip(r.width() > 0 && r.height() > 0
+                         ? rect_path(r.x0, r.y0, r.width(), r.height(), 0, 0)
+                         : Path{},
+                     m, FillRule::NonZero);
+}
+
+std::shared_ptr<const Mask> Reader::path_clip(Path p, const Affine& m, FillRule rule) {
     auto clip = std::make_shared<Mask>();
-    if (r.width() > 0 && r.height() > 0) {
+    if (!p.empty()) {
         Shape s;
-        s.path = rect_path(r.x0, r.y0, r.width(), r.height(), 0, 0);
+        s.path = std::move(p);
         s.transform = m;
-        s.fill = Fill{{0, 0, 0, 1}, nullptr, 1, FillRule::NonZero, nullptr};
+        s.fill = Fill{{0, 0, 0, 1}, nullptr, 1, rule, nullptr};
         clip->content.children.push_back(Node{std::move(s)});
     }
     return clip;
+}
+
+// A basic shape's clip (top of the file) for the element drawing g.
+std::shared_ptr<const Mask> Reader::shape_clip(const BasicShape& s, const Affine& m, const Group& g,
+                                               const BoxOf& bbox) {
+    const Rect box = s.box == ShapeBox::View   ? Rect{0, 0, vw_, vh_}
+                     : s.box == ShapeBox::Fill ? bbox()
+                                               : user_bbox(g, m.inverse(), true);
+    return path_clip(box.is_empty() ? Path{} : shape_path(s, box), m, s.fill_rule);
 }
 
 // The clip path or mask that `id` names ("" for none), for an element whose
@@ -126,7 +154,8 @@ void Reader::apply_effects(const pugi::xml_node& n, const ElementProps& props, c
         if (!box) box = user_bbox(g, to_user);
         return *box;
     };
-    g.clip = effect(n, props.clip_path, true, m, bbox, depth);
+    g.clip = props.clip_shape ? shape_clip(*props.clip_shape, m, g, bbox)
+                              : effect(n, props.clip_path, true, m, bbox, depth);
     g.mask = effect(n, props.mask, false, m, bbox, depth);
     if (!props.filter.empty() && !apply_filters(n, props, m, g, bbox, depth))
         g = Group{}; // not drawn: nothing left that needs a layer, dropped by add_group

@@ -65,12 +65,7 @@ std::optional<std::array<int, 3>> parse_paint_order(std::string_view v) {
     v = trim(v);
     if (v == "normal") return std::array<int, 3>{0, 1, 2};
     std::vector<int> order;
-    for (std::size_t i = 0; i < v.size();) {
-        while (i < v.size() && std::isspace(static_cast<unsigned char>(v[i]))) ++i;
-        const std::size_t start = i;
-        while (i < v.size() && !std::isspace(static_cast<unsigned char>(v[i]))) ++i;
-        const std::string_view w = v.substr(start, i - start);
-        if (w.empty()) break;
+    for (const std::string_view w : svg_detail::words(v)) {
         const int k = w == "fill" ? 0 : w == "stroke" ? 1 : w == "markers" ? 2 : -1;
         if (k < 0 || std::find(order.begin(), order.end(), k) != order.end()) return std::nullopt;
         order.push_back(k);
@@ -212,13 +207,7 @@ std::optional<double> parse_font_size(std::string_view v, double parent, const L
 // keyword (left, center, right for x; top, center, bottom for y; a single y
 // keyword leaves x at center), the third (z) ignored in 2D.
 std::optional<BoxPoint> parse_transform_origin(std::string_view v, const LengthContext& ctx) {
-    std::vector<std::string_view> words;
-    for (std::size_t i = 0; i < v.size();) {
-        while (i < v.size() && std::isspace(static_cast<unsigned char>(v[i]))) ++i;
-        const std::size_t start = i;
-        while (i < v.size() && !std::isspace(static_cast<unsigned char>(v[i]))) ++i;
-        if (i > start) words.push_back(v.substr(start, i - start));
-    }
+    const std::vector<std::string_view> words = svg_detail::words(v);
     if (words.empty() || words.size() > 3) return std::nullopt;
     const auto keyword = [](std::string_view w) -> std::optional<std::pair<char, double>> {
         if (w == "left") return std::pair{'x', 0.0};
@@ -407,8 +396,15 @@ std::string apply_property(std::string_view name, std::string_view value, const 
                                                 {"border-box", TransformBox::StrokeBox}}),
                    "view-box, fill-box, stroke-box, content-box or border-box");
     constexpr const char* kReference = "none or url(#id)";
-    if (name == "clip-path")
-        return set(props.clip_path, std::string(), parse_reference(value), kReference);
+    if (name == "clip-path") {
+        // A reference, or a basic shape (svg/basic_shape.h): one replaces the other.
+        std::optional<BasicShape> shape;
+        const std::optional<std::string> id = parse_reference(value);
+        if (!id && !inherit && !(shape = parse_basic_shape(value, ctx)))
+            return bad(name, value, "none, url(#id), a basic shape or a geometry box");
+        props.clip_path = id.value_or(std::string()), props.clip_shape = std::move(shape);
+        return "";
+    }
     if (name == "mask") return set(props.mask, std::string(), parse_reference(value), kReference);
     if (name == "clip-rule")
         return set(s.clip_rule, parent.clip_rule,

@@ -23,6 +23,7 @@
 #include "casteljau/paint/color.h"
 #include "casteljau/raster/sweep.h"
 #include "casteljau/scene/scene.h"
+#include "casteljau/svg/basic_shape.h"
 #include "casteljau/svg/text_properties.h"
 #include "casteljau/svg/transform_list.h"
 
@@ -112,7 +113,9 @@ struct ElementProps {
     /// and, as in browsers, do nothing).
     bool non_scaling_stroke = false;
     std::string clip_path; ///< the id of a clipPath, "" for none
-    std::string mask;      ///< the id of a mask, "" for none
+    /// clip-path as a basic shape or a geometry box (svg/basic_shape.h).
+    std::optional<BasicShape> clip_shape;
+    std::string mask; ///< the id of a mask, "" for none
     BlendMode blend = BlendMode::Normal;
     bool isolate = false;    ///< isolation: isolate
     bool mask_alpha = false; ///< mask-type: alpha (on a mask element)

@@ -186,8 +186,8 @@ class Reader {
                          Group& out, int depth);
     // clip-path, mask, mix-blend-mode, isolation (svg/clip_mask.cpp).
     static bool has_effects(const ElementProps& p) {
-        return !p.clip_path.empty() || !p.mask.empty() || p.blend != BlendMode::Normal ||
-               p.isolate || !p.filter.empty();
+        return !p.clip_path.empty() || p.clip_shape || !p.mask.empty() ||
+               p.blend != BlendMode::Normal || p.isolate || !p.filter.empty();
     }
     void apply_effects(const pugi::xml_node& n, const ElementProps& props, const Affine& m,
                        Group& g, int depth);
@@ -220,9 +220,14 @@ class Reader {
                                       const Affine& m, Filter& f, int depth);
     // The box of what a group draws (its shapes' paths, strokes apart), in
     // the coordinates `to_user` maps device space to.
-    static Rect user_bbox(const Group& g, const Affine& to_user);
+    // With `strokes`, each stroked shape's box outset by half its width.
+    static Rect user_bbox(const Group& g, const Affine& to_user, bool strokes = false);
     // A clip to the rectangle r of the coordinates m maps to device space.
     static std::shared_ptr<const Mask> rect_clip(const Rect& r, const Affine& m);
+    // A clip to the outline p of those coordinates, filled by `rule`.
+    static std::shared_ptr<const Mask> path_clip(Path p, const Affine& m, FillRule rule);
+    std::shared_ptr<const Mask> shape_clip(const BasicShape& s, const Affine& m, const Group& g,
+                                           const BoxOf& bbox);
     static bool fits(const Group& g, const Rect& r, const Affine& to_r);
     // The clip of a viewport r (in the coordinates m maps to device space)
     // around `content`; null when the content lies wholly inside.
