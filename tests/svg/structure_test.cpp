@@ -195,6 +195,17 @@ TEST(Markers, BrokenReferencesAndExpansionPastTheLimit) {
         << big.error;
 }
 
+TEST(Markers, TheMarkerShorthandIsCssOnly) {
+    // SVG 2, 6.6: marker is no presentation attribute; found on WPT's
+    // marker-004, where the attribute drew red markers.
+    const SvgResult r = read(R"svg(<marker id="m"><rect width="1" height="1"/></marker>
+        <path d="M0 0 H10" stroke="red" marker="url(#m)"/>
+        <path d="M0 0 H10" stroke="red" style="marker: url(#m)"/>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    EXPECT_TRUE(r.warnings.empty());
+    EXPECT_EQ(shapes(*r.scene).size(), 4u) << "the first path alone, the second and 2 markers";
+}
+
 TEST(Painting, PaintOrderAndShapeRendering) {
     const SvgResult r = read(R"svg(<marker id="m"><rect width="1" height="1"/></marker>
         <rect width="5" height="5" stroke="red" paint-order="stroke"/>

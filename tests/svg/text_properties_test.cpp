@@ -626,7 +626,8 @@ TEST(TextProperties, ThroughTheReader) {
     const SvgResult r = parse_svg(R"svg(<svg width="200" height="100" font-size="10">
         <rect width="2em" height="1em" style="font: bold 2em/3 serif"/>
         <g style="font: italic 150% 'A', B"><rect width="1em" height="1em"/></g>
-        <rect width="1em" height="1em" font-weight="heavy" font="bold"/>
+        <rect width="1em" height="1em" font-weight="heavy" style="font: bold"/>
+        <rect width="1em" height="1em" font="20px serif"/>
         </svg>)svg",
                                   "t.svg");
     ASSERT_TRUE(r.scene) << r.error;
@@ -634,11 +635,13 @@ TEST(TextProperties, ThroughTheReader) {
     EXPECT_NEAR(shape_at(*r.scene, 0).path.bounds().height(), 20, 1e-12);
     EXPECT_NEAR(shape_at(*r.scene, 1).path.bounds().width(), 15, 1e-12);
     EXPECT_NEAR(shape_at(*r.scene, 2).path.bounds().width(), 10, 1e-12);
+    EXPECT_NEAR(shape_at(*r.scene, 3).path.bounds().width(), 10, 1e-12)
+        << "font is no presentation attribute (SVG 2, 6.6): ignored";
     // One warning each, in the order the attributes are written.
     ASSERT_EQ(r.warnings.size(), 2u);
     EXPECT_NE(r.warnings[0].text().find("property font-weight: 'heavy'"), std::string::npos)
         << r.warnings[0].text();
-    EXPECT_NE(r.warnings[1].text().find("property font: 'bold'"), std::string::npos)
+    EXPECT_NE(r.warnings[1].text().find("style: property font: 'bold'"), std::string::npos)
         << r.warnings[1].text();
 }
 

@@ -218,8 +218,12 @@ Affine Reader::view_map(const pugi::xml_node& n, const ViewBox& box, double w, d
 // and must not call matched() (the sheet's declarations are matched_).
 // With `tell`, the style attribute's syntax problems are problems.
 void Reader::cascade(const pugi::xml_node& n, bool tell, const DeclarationVisitor& visit) {
+    // The shorthands marker and font are CSS's only, not presentation
+    // attributes (SVG 2, 6.6), as browsers and librsvg read them.
     for (const pugi::xml_attribute& a : n.attributes())
-        if (std::strcmp(a.name(), "style") != 0) visit(a.name(), a.value(), "");
+        if (std::strcmp(a.name(), "style") != 0 && std::strcmp(a.name(), "marker") != 0 &&
+            std::strcmp(a.name(), "font") != 0)
+            visit(a.name(), a.value(), "");
     const std::vector<const CssDeclaration*>& sheet = matched(n);
     std::vector<CssDeclaration> inline_style;
     if (const pugi::xml_attribute a = n.attribute("style")) {
