@@ -206,6 +206,51 @@ TEST(Markers, TheMarkerShorthandIsCssOnly) {
     EXPECT_EQ(shapes(*r.scene).size(), 4u) << "the first path alone, the second and 2 markers";
 }
 
+TEST(PathLength, DashesAreInItsUnits) {
+    // SVG 2, 9.1.4: a 100 px line with pathLength 10 dashes "1 1" as 10 10.
+    const SvgResult r = read(R"svg(<g stroke="black" stroke-dasharray="1 1" stroke-dashoffset="0.5">
+        <path d="M0 0 H100" pathLength="10"/><line x2="100" pathLength="0"/>
+        <path d="M0 0 H100" pathLength="-1"/><path d="M0 0 H100"/></g>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    const auto s = shapes(*r.scene);
+    ASSERT_EQ(s.size(), 4u);
+    ASSERT_EQ(s[0]->stroke->geometry.dashes.size(), 2u);
+    EXPECT_NEAR(s[0]->stroke->geometry.dashes[0], 10, 1e-6);
+    EXPECT_NEAR(s[0]->stroke->geometry.dash_offset, 5, 1e-6);
+    EXPECT_TRUE(s[1]->stroke->geometry.dashes.empty()) << "0: the first dash forever";
+    EXPECT_EQ(s[2]->stroke->geometry.dashes, s[3]->stroke->geometry.dashes) << "negative: ignored";
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].text().find("pathLength: '-1'"), std::string::npos)
+        << r.warnings[0].text();
+}
+
+TEST(PathLength, TextPathStartOffsetIsInItsUnits) {
+    // Found on WPT's pathLength-positive and -zero: startOffset 1 of a
+    // pathLength of 2 is half the path, as 50% is; of a pathLength of 0, an
+    // infinite offset: no glyph on the path.
+    const auto glyph_boxes = [](const std::string& path_length, const char* offset) {
+        const SvgResult r =
+            read(R"svg(<defs><path id="p" d="M 50 50 h 200")svg" + path_length +
+                 R"svg(/></defs><text font-size="20"><textPath href="#p" startOffset=")svg" +
+                 offset + R"svg(">Fox</textPath></text>)svg");
+        EXPECT_TRUE(r.scene) << r.error;
+        std::vector<Rect> boxes;
+        for (const Shape* s : shapes(*r.scene))
+            if (!s->path.empty()) boxes.push_back(device_bounds(*s));
+        return boxes;
+    };
+    const std::vector<Rect> half = glyph_boxes("", "50%"),
+                            scaled = glyph_boxes(R"( pathLength="2")", "1");
+    ASSERT_FALSE(half.empty());
+    ASSERT_EQ(half.size(), scaled.size());
+    for (std::size_t i = 0; i < half.size(); ++i) {
+        EXPECT_NEAR(half[i].x0, scaled[i].x0, 1e-9) << i;
+        EXPECT_NEAR(half[i].y0, scaled[i].y0, 1e-9) << i;
+    }
+    EXPECT_TRUE(glyph_boxes(R"( pathLength="0")", "1").empty());
+    EXPECT_EQ(glyph_boxes(R"( pathLength="0")", "0").size(), glyph_boxes("", "0").size());
+}
+
 TEST(Painting, PaintOrderAndShapeRendering) {
     const SvgResult r = read(R"svg(<marker id="m"><rect width="1" height="1"/></marker>
         <rect width="5" height="5" stroke="red" paint-order="stroke"/>

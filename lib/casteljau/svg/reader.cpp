@@ -486,6 +486,7 @@ Shape Reader::painted(const pugi::xml_node& n, Path path, const StyleState& styl
     if (const auto p = paint(n, style.stroke, style, of); p && style.stroke_geometry.width > 0)
         s.stroke = Stroke{p->color, boxed(p->gradient), style.stroke_opacity, style.stroke_geometry,
                           p->pattern};
+    if (s.stroke && !s.stroke->geometry.dashes.empty()) dashes_in_path_length(n, s);
     if (props.non_scaling_stroke && s.stroke) to_host_space(s);
     return s;
 }

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace casteljau {
@@ -92,6 +93,11 @@ PointList parse_point_list(std::string_view s) {
     for (std::size_t k = 0; k + 1 < values.size(); k += 2)
         out.points.push_back({values[k], values[k + 1]});
     return out;
+}
+
+double from_path_length(double d, double length, double path_length) {
+    if (path_length > 0) return d * (length / path_length);
+    return d == 0 ? 0.0 : std::copysign(std::numeric_limits<double>::infinity(), d);
 }
 
 } // namespace casteljau

@@ -19,6 +19,12 @@ Path ellipse_path(double cx, double cy, double rx, double ry);
 Path line_path(Point a, Point b);
 Path poly_path(const std::vector<Point>& points, bool close);
 
+/// A distance along a shape in the units of its pathLength attribute (SVG 2,
+/// 9.1.4: dashes, textPath's startOffset) in user units: d scaled by
+/// length / path_length for the shape's computed `length`. A pathLength of 0
+/// is a factor of infinity: 0 stays 0, any other distance goes to infinity.
+double from_path_length(double d, double length, double path_length);
+
 /// The `points` attribute: coordinate pairs separated by whitespace and/or
 /// commas. On malformed input or an odd count, `points` holds the pairs before
 /// the error (SVG 1.1 F.2: render up to it) and `error` says what is wrong.

@@ -259,6 +259,7 @@ bool Reader::text_path(const pugi::xml_node& e, TextReading& r) {
     const bool saved = quiet_;
     quiet_ = true; // the shape's own problems are told where it is drawn
     ref.path = geometry(target, kind, context(span.style));
+    ref.path_length = path_length(target);
     quiet_ = saved;
     if (const pugi::xml_attribute t = target.attribute("transform")) {
         const TransformResult tr = parse_transform_list(t.value());

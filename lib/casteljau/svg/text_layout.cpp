@@ -22,6 +22,7 @@
 //      upright, others turn 90 degrees (glyph-orientation-vertical: auto).
 #include "casteljau/curve/path_measure.h"
 #include "casteljau/svg/detail/text_content.h"
+#include "casteljau/svg/shapes.h"
 #include "casteljau/text/bidi.h"
 
 #include <algorithm>
@@ -334,7 +335,9 @@ void Layouter::on_path(const std::vector<LaidGlyph>& glyphs, const std::vector<C
     }
     const PathMeasure& measure = *measures_[path];
     const double offset =
-        ref.start_percent ? ref.start_offset * measure.length() : ref.start_offset;
+        ref.start_percent ? ref.start_offset * measure.length()
+        : ref.path_length ? from_path_length(ref.start_offset, measure.length(), *ref.path_length)
+                          : ref.start_offset;
     for (const Cluster& c : cl) {
         const double half = c.advance * c.stretch / 2;
         double d = offset + c.pen.x + half;

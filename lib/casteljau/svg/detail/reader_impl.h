@@ -298,6 +298,10 @@ class Reader {
     std::optional<double> non_negative(const pugi::xml_node& n, const char* attr,
                                        std::optional<double> v);
     Path geometry(const pugi::xml_node& n, std::string_view name, const LengthContext& ctx);
+    // pathLength (svg/path_length.cpp).
+    std::optional<double> path_length(const pugi::xml_node& n);
+    static double measured_length(const Path& p);
+    void dashes_in_path_length(const pugi::xml_node& n, Shape& s);
 
     std::string_view text_;
     std::string name_;

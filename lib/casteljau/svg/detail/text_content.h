@@ -34,7 +34,9 @@ struct TextPathRef {
     Path path; ///< in the text's user space
     double start_offset = 0;
     bool start_percent = false; ///< start_offset is a fraction of the length
-    bool right_side = false;    ///< side="right": along the path's reverse
+    /// The path's pathLength: a start_offset in its units (svg/path_length.cpp).
+    std::optional<double> path_length;
+    bool right_side = false; ///< side="right": along the path's reverse
 };
 
 struct TextChar {
