@@ -151,6 +151,21 @@ TEST(ClipPath, ABasicShapesBoxIsTheStrokeBoxUnlessItSaysOtherwise) {
     EXPECT_NE(warnings[0].text().find("a basic shape"), std::string::npos) << warnings[0].text();
 }
 
+TEST(ClipPath, TheBoundingBoxLeavesMarkersOut) {
+    // Found on WPT's clip-path-on-marker-001: an objectBoundingBox clip of
+    // the element's own box (SVG 2, 8.10: markers do not count) clips the
+    // marker that reaches out of it; the box had taken the marker in.
+    const Canvas c = render(R"svg(<clipPath id="c" clipPathUnits="objectBoundingBox">
+        <rect width="1" height="1"/></clipPath>
+        <marker id="m" markerWidth="40" markerHeight="40" refX="20" refY="20"
+          markerUnits="userSpaceOnUse"><rect width="40" height="40" fill="blue"/></marker>
+        <path d="M30 30 H90 V90 H30 Z" fill="green" marker-start="url(#m)"
+          clip-path="url(#c)"/>)svg");
+    EXPECT_EQ(c.row(15)[15].a, 0.0f) << "the marker outside the box";
+    EXPECT_GT(c.row(40)[40].b, 0.99f) << "the marker inside it";
+    EXPECT_GT(c.row(80)[80].g, 0.4f) << "the path";
+}
+
 TEST(Mask, LuminanceAndAlpha) {
     // A mask of gray g scales by its luminance, 0.2125 r + 0.7154 g + 0.0721 b
     // of the sRGB-encoded values; mask-type: alpha by its alpha.

@@ -145,16 +145,16 @@ std::shared_ptr<const Mask> Reader::effect(const pugi::xml_node& n, const std::s
 }
 
 void Reader::apply_effects(const pugi::xml_node& n, const ElementProps& props, const Affine& m,
-                           Group& g, int depth) {
+                           Group& g, int depth, const Group* boxed) {
     g.blend = props.blend;
     g.isolate = props.isolate;
     const Affine to_user = m.inverse();
     std::optional<Rect> box; // computed once, if a unit needs it
     const auto bbox = [&]() -> const Rect& {
-        if (!box) box = user_bbox(g, to_user);
+        if (!box) box = user_bbox(boxed ? *boxed : g, to_user);
         return *box;
     };
-    g.clip = props.clip_shape ? shape_clip(*props.clip_shape, m, g, bbox)
+    g.clip = props.clip_shape ? shape_clip(*props.clip_shape, m, boxed ? *boxed : g, bbox)
                               : effect(n, props.clip_path, true, m, bbox, depth);
     g.mask = effect(n, props.mask, false, m, bbox, depth);
     if (!props.filter.empty() && !apply_filters(n, props, m, g, bbox, depth))

@@ -376,6 +376,7 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
                          ? ctm * own_transform(n, name, parent_style, style, props, depth)
                          : ctm;
     Group g{props.opacity, {}};
+    Group boxed; // a shape with markers and effects: the shape alone
     if (group) {
         walk(n, style, m, g, depth + 1);
     } else if (name == "switch") {
@@ -410,6 +411,8 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
         }
         // The element's opacity covers its markers too: the group carries it.
         sh->opacity = 1;
+        // Its effects' bounding box is the shape's alone (SVG 2, 8.10).
+        if (has_effects(props)) boxed.children.push_back(Node{*sh});
         Group marks{1, {}}; // not into g: its shape must stay where it is meanwhile
         markers(n, *sh, style, marks, depth);
         // paint-order with markers: before both paints, between them (the
@@ -435,7 +438,8 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
             g.children.push_back(Node{std::move(*sh)});
         }
     }
-    if (has_effects(props)) apply_effects(n, props, m, g, depth);
+    if (has_effects(props))
+        apply_effects(n, props, m, g, depth, boxed.children.empty() ? nullptr : &boxed);
     add_group(out, std::move(g));
 }
 

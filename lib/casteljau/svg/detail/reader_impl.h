@@ -189,8 +189,10 @@ class Reader {
         return !p.clip_path.empty() || p.clip_shape || !p.mask.empty() ||
                p.blend != BlendMode::Normal || p.isolate || !p.filter.empty();
     }
+    // `boxed`, when given, is what the element's boxes are taken from (its
+    // shape without its markers: markers do not count, SVG 2, 8.10).
     void apply_effects(const pugi::xml_node& n, const ElementProps& props, const Affine& m,
-                       Group& g, int depth);
+                       Group& g, int depth, const Group* boxed = nullptr);
     // The user-space box of the element an effect applies to, computed on demand.
     using BoxOf = std::function<const Rect&()>;
     std::shared_ptr<const Mask> effect(const pugi::xml_node& n, const std::string& id, bool is_clip,
