@@ -251,6 +251,25 @@ TEST(PathLength, TextPathStartOffsetIsInItsUnits) {
     EXPECT_EQ(glyph_boxes(R"( pathLength="0")", "0").size(), glyph_boxes("", "0").size());
 }
 
+TEST(DProperty, CssOverridesTheAttribute) {
+    // SVG 2, 9.3.1; found on WPT's path/property/priority, where CSS's d was
+    // ignored.
+    const SvgResult r = read(R"svg(<style>#a { d: path('M 20 10 h 70') }</style>
+        <path id="a" d="M 10 20 h 70" stroke="blue"/>
+        <path d="M 10 90 h 70" style="d: path(&quot;M 20 80 h 70&quot;)" stroke="blue"/>
+        <path d="M 10 50 h 70" style="d: path('M 20 80 h 70 Q')" stroke="blue"/>
+        <path d="M 10 60 h 70" style="d: none" stroke="blue"/>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    const auto s = shapes(*r.scene);
+    ASSERT_EQ(s.size(), 3u) << "none draws nothing";
+    expect_box(*s[0], {20, 10, 90, 10}, "the style sheet's");
+    expect_box(*s[1], {20, 80, 90, 80}, "the style attribute's");
+    expect_box(*s[2], {10, 50, 80, 50}, "invalid path data in CSS: the attribute's");
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].text().find("property d: 'path('M 20 80 h 70 Q')'"), std::string::npos)
+        << r.warnings[0].text();
+}
+
 TEST(Painting, PaintOrderAndShapeRendering) {
     const SvgResult r = read(R"svg(<marker id="m"><rect width="1" height="1"/></marker>
         <rect width="5" height="5" stroke="red" paint-order="stroke"/>

@@ -58,6 +58,16 @@ bool declares(std::string_view style, std::string_view property) {
 
 } // namespace
 
+// Whether CSS declares `property` for the element: a style sheet does, or
+// its style attribute names it. The cascade of a geometry property is read
+// only then: most elements have neither, and cascade() parses the style
+// attribute again.
+bool Reader::in_css(const pugi::xml_node& n, std::string_view property) {
+    for (const CssDeclaration* d : matched(n))
+        if (d->name == property) return true;
+    return declares(n.attribute("style").value(), property);
+}
+
 // A length attribute, or for a geometry property its cascaded value (the
 // last valid declaration); nullopt when absent, auto, or invalid (a problem
 // for each invalid declaration).
@@ -70,15 +80,7 @@ std::optional<double> Reader::length(const pugi::xml_node& n, const char* attr, 
         problem(n, (*from ? std::string(from) + "property " : std::string("attribute ")) + attr +
                        ": '" + std::string(v) + "' is not a length; ignored");
     };
-    // The cascade only where CSS can set it: a style sheet declares it for
-    // the element, or the style attribute names it (most elements have
-    // neither, and cascade() parses the style attribute again).
-    const auto in_css = [&] {
-        for (const CssDeclaration* d : matched(n))
-            if (d->name == attr) return true;
-        return declares(n.attribute("style").value(), attr);
-    };
-    if (!geometry_property(n.name(), attr) || !in_css()) {
+    if (!geometry_property(n.name(), attr) || !in_css(n, attr)) {
         if (const pugi::xml_attribute a = n.attribute(attr)) take(a.value(), "");
         return value;
     }
@@ -563,13 +565,7 @@ std::optional<double> Reader::non_negative(const pugi::xml_node& n, const char* 
 }
 
 Path Reader::geometry(const pugi::xml_node& n, std::string_view name, const LengthContext& ctx) {
-    if (name == "path") {
-        PathDataResult r = parse_path_data(n.attribute("d").value());
-        if (r.error)
-            problem(n, "attribute d: path data: at offset " + std::to_string(r.error->offset) +
-                           ": " + r.error->message + " (drawn up to there)");
-        return std::move(r.path);
-    }
+    if (name == "path") return path_data(n);
     if (name == "polyline" || name == "polygon") {
         PointList pts = parse_point_list(n.attribute("points").value());
         if (!pts.error.empty()) problem(n, "attribute " + pts.error + " (drawn up to there)");

@@ -123,8 +123,11 @@ class Reader {
     LengthContext context(const StyleState& s) const {
         return {s.font_size, root_font_size_, vw_, vh_};
     }
+    bool in_css(const pugi::xml_node& n, std::string_view property);
     std::optional<double> length(const pugi::xml_node& n, const char* attr, double percent_of,
                                  const LengthContext& ctx);
+    // A path's d: the attribute, or the CSS d property (svg/d_property.cpp).
+    Path path_data(const pugi::xml_node& n);
     Scene read();
     std::optional<Affine> viewport(const pugi::xml_node& root, Scene& scene,
                                    const LengthContext& ctx);
