@@ -234,12 +234,42 @@ void Reader::cascade(const pugi::xml_node& n, bool tell, const DeclarationVisito
         if (tell)
             for (const CssProblem& p : problems) problem(n, "style: " + p.message);
     }
+    // A CSS declaration's var()s substituted from the element's custom
+    // properties (svg/custom_properties.h); one that cannot be is dropped.
+    const auto css = [&](const std::string& name, std::string_view value, const char* from) {
+        if (!vars_ || name.rfind("--", 0) == 0 || !has_var(value)) return visit(name, value, from);
+        if (const auto v = substitute_vars(value, custom_.get(), options_.max_attribute_bytes))
+            return visit(name, *v, from);
+        if (tell)
+            problem(n, std::string(from) + "property " + name + ": '" + std::string(value) +
+                           "': a var() names no custom property and has no fallback, or "
+                           "refers back to itself; ignored");
+    };
     for (const bool important : {false, true}) {
         for (const CssDeclaration* d : sheet)
-            if (d->important == important) visit(d->name, d->value, "style sheet: ");
+            if (d->important == important) css(d->name, d->value, "style sheet: ");
         for (const CssDeclaration& d : inline_style)
-            if (d.important == important) visit(d.name, d.value, "style: ");
+            if (d.important == important) css(d.name, d.value, "style: ");
     }
+}
+
+// The element's custom properties: its parent's (already in `style`) and
+// those its CSS declares, in cascade order.
+void Reader::collect_custom(const pugi::xml_node& n, StyleState& style) {
+    std::shared_ptr<CustomProperties> own;
+    cascade(n, false, [&](std::string_view name, std::string_view value, const char* from) {
+        if (!*from || name.size() < 3 || name.substr(0, 2) != "--") return;
+        if (!own)
+            own = style.custom ? std::make_shared<CustomProperties>(*style.custom)
+                               : std::make_shared<CustomProperties>();
+        const auto same =
+            std::find_if(own->begin(), own->end(), [&](const auto& p) { return p.first == name; });
+        if (same != own->end())
+            same->second = trim(value);
+        else
+            own->emplace_back(std::string(name), std::string(trim(value)));
+    });
+    if (own) style.custom = std::move(own);
 }
 
 // The values declared for one property on the element, in cascade order
@@ -247,10 +277,18 @@ void Reader::cascade(const pugi::xml_node& n, bool tell, const DeclarationVisito
 // resolves itself (a stop's stop-color and stop-opacity), which must pass an
 // invalid one over for the one before it, as CSS drops an invalid declaration.
 std::vector<std::string> Reader::declarations(const pugi::xml_node& n, std::string_view property) {
+    // var()s take n's custom properties (style_of computes them), not the
+    // element being drawn's, which are put back after.
+    const std::shared_ptr<const CustomProperties> drawn = custom_;
+    if (vars_) {
+        ElementProps props;
+        custom_ = style_of(n, props).custom;
+    }
     std::vector<std::string> values;
     cascade(n, false, [&](std::string_view name, std::string_view v, const char*) {
         if (name == property) values.emplace_back(v);
     });
+    custom_ = drawn;
     return values;
 }
 
@@ -262,6 +300,10 @@ void Reader::apply_declarations(const pugi::xml_node& n, const StyleState& paren
                                 StyleState& style, ElementProps* props, const LengthContext& ctx) {
     if (!props)
         for (const pugi::xml_attribute& a : n.attributes()) check_length_limit(n, a);
+    if (vars_) {
+        if (!props) collect_custom(n, style);
+        custom_ = style.custom;
+    }
     ElementProps unused;
     const auto apply = [&](std::string_view name, std::string_view value, const char* from) {
         // The font shorthand goes in both: its size in the first, the

@@ -24,10 +24,12 @@
 #include "casteljau/raster/sweep.h"
 #include "casteljau/scene/scene.h"
 #include "casteljau/svg/basic_shape.h"
+#include "casteljau/svg/custom_properties.h"
 #include "casteljau/svg/text_properties.h"
 #include "casteljau/svg/transform_list.h"
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -86,6 +88,9 @@ struct StyleState {
     /// (an image's nearest pixel, not a bilinear blend).
     bool smooth_images = true;
     TextState text; ///< the inherited text properties (svg/text_properties.h)
+    /// Custom properties (svg/custom_properties.h), inherited; shared
+    /// between the elements that declare none of their own.
+    std::shared_ptr<const CustomProperties> custom;
     /// The element's own values of the text properties that are not
     /// inherited: what `inherit` takes for them in its children.
     TextProps own_text;

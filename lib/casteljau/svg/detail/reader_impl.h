@@ -81,6 +81,11 @@ class Reader {
         if (!options_.image_budget) options_.image_budget = std::make_shared<ImageBudget>();
         for (std::size_t i = 0; i < text.size(); ++i)
             if (text[i] == '\n') newlines_.push_back(i);
+        // Any "var(" at all (in a string or a comment too: a false yes only
+        // costs tracking custom properties).
+        for (std::size_t i = 0; i + 4 <= text.size() && !vars_; ++i)
+            vars_ = (text[i] | 0x20) == 'v' && (text[i + 1] | 0x20) == 'a' &&
+                    (text[i + 2] | 0x20) == 'r' && text[i + 3] == '(';
     }
 
     SvgResult run() {
@@ -155,6 +160,7 @@ class Reader {
     std::vector<std::string> declarations(const pugi::xml_node& n, std::string_view property);
     void apply_declarations(const pugi::xml_node& n, const StyleState& parent, StyleState& style,
                             ElementProps* props, const LengthContext& ctx);
+    void collect_custom(const pugi::xml_node& n, StyleState& style);
     void walk(const pugi::xml_node& parent, const StyleState& parent_style, const Affine& ctm,
               Group& out, int depth) {
         for (const pugi::xml_node& n : parent.children())
@@ -324,7 +330,9 @@ class Reader {
     std::vector<pugi::xml_node> instancing_;    // the <use> targets being drawn
     std::map<const void*, std::size_t> sizes_;
     std::map<const void*, Rect> fill_boxes_; // transform-box: fill-box, measured once an element
-    pugi::xml_node measuring_;               // the element fill_box is walking, drawn untransformed
+    bool vars_ = false; // the document has a var(): custom properties are tracked
+    std::shared_ptr<const CustomProperties> custom_; // the element being styled's
+    pugi::xml_node measuring_; // the element fill_box is walking, drawn untransformed
     StyleSheet sheet_;
     PugiCssTree css_tree_;
     std::unique_ptr<CssMatcher> matcher_; // none without style sheets
