@@ -49,6 +49,11 @@ void add_svg_options(CLI::App* cmd, SvgOptions& o) {
                     "The user's languages for systemLanguage and <switch>, comma-separated "
                     "(default en)")
         ->delimiter(',');
+    cmd->add_option_function<std::string>(
+           "--color-scheme", [&o](const std::string& scheme) { o.dark = scheme == "dark"; },
+           "The color scheme style sheets' @media (prefers-color-scheme) queries see: light "
+           "(default) or dark")
+        ->check(CLI::IsMember({"light", "dark"}));
     cmd->add_option("--resources-dir", o.resources_dir,
                     "A folder <image> files may also come from, besides the SVG's own folder and "
                     "below (never the network)")

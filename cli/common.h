@@ -32,8 +32,8 @@ void add_flatten_options(CLI::App* cmd, FlattenOptions& o);
 // returns false (the caller exits with status 2).
 bool check_tolerance(const char* command, double tolerance);
 
-// --strict, --languages (and the old --partial-path-data, now what is done
-// anyway), into `o`.
+// --strict, --languages, --color-scheme, --resources-dir and the fonts'
+// options (and the old --partial-path-data, now what is done anyway), into `o`.
 void add_svg_options(CLI::App* cmd, SvgOptions& o);
 
 // What a command has to say about one input, kept to be printed in one

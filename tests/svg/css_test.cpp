@@ -147,7 +147,7 @@ TEST(CssParse, AtRulesAreSkippedWhole) {
     std::vector<CssProblem> problems;
     const StyleSheet sheet = sheet_of(R"(@charset "utf-8";
 @import url("other.css") screen;
-@media screen { rect { fill: red } g { x: y } }
+@media (min-width: 1px) { rect { fill: red } g { x: y } }
 @font-face { font-family: x; src: url(a.woff) }
 @supports (display: grid) and (not (x: y)) { @media print { rect { fill: red } } }
 @keyframes k { from { opacity: 0 } to { opacity: 1 } }
@@ -163,6 +163,51 @@ TEST(CssParse, AtRulesAreSkippedWhole) {
         EXPECT_EQ(problems[i].line, int(i) + 2) << problems_text(problems);
     }
     EXPECT_NE(problems[0].message.find("@import"), std::string::npos);
+}
+
+TEST(CssParse, MediaRulesApplyAsAPictureAnswersThem) {
+    // svg/media_query.h: screen, light, no unknown feature; nested @media
+    // within a matching one; the rest skipped, an unknown feature reported.
+    std::vector<CssProblem> problems;
+    const std::string css = R"(rect { a: 0 }
+@media screen { rect { a: 1 } @media (prefers-color-scheme: light) { rect { b: 1 } } }
+@media (prefers-color-scheme: dark) { rect { a: 2 } }
+@media print, (orientation: portrait) { rect { a: 3 } }
+@media not print and (color) { rect { c: 1 } }
+@media only screen and (not (monochrome)) { rect { d: 1 } }
+@media (scripting: none) or (hover) { rect { e: 1 } }
+circle { f: 1 })";
+    const StyleSheet sheet = sheet_of(css, &problems);
+    const Doc doc(kTree);
+    EXPECT_EQ(cascade(sheet, doc, "r1"), "a:0 a:1 b:1 c:1 d:1");
+    EXPECT_EQ(cascade(sheet, doc, "c1"), "f:1") << "the sheet goes on after the blocks";
+    ASSERT_EQ(problems.size(), 2u) << problems_text(problems);
+    EXPECT_TRUE(problems[0].unsupported && problems[1].unsupported);
+    EXPECT_EQ(problems[0].line, 4);
+    EXPECT_NE(problems[0].message.find("(orientation: portrait)"), std::string::npos);
+    EXPECT_EQ(problems[1].line, 7) << "(hover) makes its query false, or or not";
+    StyleSheet dark;
+    std::vector<CssProblem> quiet;
+    dark.parse(css, quiet, MediaContext{true});
+    EXPECT_EQ(cascade(dark, doc, "r1"), "a:0 a:1 a:2 c:1 d:1");
+}
+
+TEST(MediaQuery, ListsTypesAndConditions) {
+    const MediaContext light;
+    for (const char* yes :
+         {"", "all", "screen", "ALL", "not print", "only screen", "print, screen", "(color)",
+          "(prefers-color-scheme: light)", "((color) and (grid: 0))", "not (monochrome)",
+          "(forced-colors: none) and (prefers-contrast: no-preference)"})
+        EXPECT_TRUE(media_matches(yes, light, nullptr)) << yes;
+    for (const char* no : {"print", "not screen", "(prefers-color-scheme: dark)", "(monochrome)",
+                           "screen and", "(color) and (grid) or (color)", "(color", "screen print",
+                           "(width >= 10px)", "not (hover)"})
+        EXPECT_FALSE(media_matches(no, light, nullptr)) << no;
+    std::string unknown;
+    EXPECT_FALSE(media_matches("screen and (max-width: 600px)", light, &unknown));
+    EXPECT_EQ(unknown, "(max-width: 600px)");
+    EXPECT_TRUE(media_matches("(prefers-color-scheme: dark)", MediaContext{true}, &unknown));
+    EXPECT_EQ(unknown, "");
 }
 
 // Each sheet: one problem (at `line`), and `rect.b` / circle still styled.

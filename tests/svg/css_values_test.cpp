@@ -169,7 +169,7 @@ TEST(StyleSheet, CascadeOrderInTheReader) {
     EXPECT_FALSE(parse_svg(svg, "c.svg", strict).scene);
     // An at-rule this reader skips is worth a warning, not an error.
     const SvgResult media = parse_svg(
-        "<svg width='9' height='9'><style>@media print { rect { fill: red } }</style></svg>",
+        "<svg width='9' height='9'><style>@media (hover) { rect { fill: red } }</style></svg>",
         "m.svg", strict);
     ASSERT_TRUE(media.scene) << media.error;
     EXPECT_EQ(media.warnings.size(), 1u);

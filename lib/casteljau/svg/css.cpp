@@ -30,6 +30,7 @@
 #include "casteljau/svg/css.h"
 
 #include "casteljau/svg/detail/css_selector.h"
+#include "casteljau/svg/media_query.h"
 #include "casteljau/text/utf8.h"
 
 #include <algorithm>
@@ -349,18 +350,26 @@ void track(std::vector<Tok>& open, Tok t) {
 
 class Parser {
   public:
-    Parser(std::string_view text, std::vector<CssProblem>& problems)
-        : text_(text), tokens_(text, problems), problems_(problems) {}
+    Parser(std::string_view text, std::vector<CssProblem>& problems, MediaContext media = {})
+        : text_(text), tokens_(text, problems), problems_(problems), media_(media) {}
 
-    void sheet(css_detail::SheetData& data) {
+    void sheet(css_detail::SheetData& data) { rules(data, false, 0); }
+
+    // Rules to the end, or (`in_block`) to the '}' closing an @media block.
+    // False when the selector limit is reached (the rest is then ignored).
+    bool rules(css_detail::SheetData& data, bool in_block, int depth) {
         for (;;) {
             Token t = tokens_.next();
-            if (t.type == Tok::Eof) return;
+            if (t.type == Tok::Eof) return in_block ? !ended() : true;
+            if (t.type == Tok::RBrace && in_block) return true;
             if (t.type == Tok::Whitespace || t.type == Tok::Cdo || t.type == Tok::Cdc) continue;
-            if (t.type == Tok::AtKeyword) {
+            if (t.type == Tok::AtKeyword && ascii_iequals(t.value, "media") &&
+                depth < kMaxMediaDepth) {
+                if (!media(t, data, depth)) return false;
+            } else if (t.type == Tok::AtKeyword) {
                 at_rule(t, false);
             } else if (!rule(std::move(t), data)) {
-                return;
+                return false;
             }
         }
     }
@@ -415,6 +424,29 @@ class Parser {
             problem(t.line, "@import is not supported (no style sheet is fetched); skipped", true);
         else
             problem(t.line, cat(name, " is not supported; skipped with its block"), true);
+    }
+
+    // An @media rule (svg/media_query.h): its block's rules when its query
+    // matches, else skipped. False when the selector limit is reached.
+    bool media(const Token& at, css_detail::SheetData& data, int depth) {
+        std::vector<Tok> open;
+        Token t = tokens_.next();
+        for (; t.type != Tok::LBrace || !open.empty(); t = tokens_.next()) {
+            if (t.type == Tok::Eof || (t.type == Tok::Semicolon && open.empty())) {
+                problem(at.line, "@media without a { block; ignored");
+                return true;
+            }
+            track(open, t.type);
+        }
+        std::string unknown;
+        if (media_matches(text_.substr(at.end, t.begin - at.end), media_, &unknown))
+            return rules(data, true, depth + 1);
+        if (!unknown.empty())
+            problem(at.line,
+                    cat("@media ", unknown, " is unknown to a picture: its block is skipped"),
+                    true);
+        skip_block();
+        return true;
     }
 
     void at_rule(const Token& t, bool nested) {
@@ -636,6 +668,7 @@ class Parser {
     std::string_view text_;
     Tokenizer tokens_;
     std::vector<CssProblem>& problems_;
+    MediaContext media_;
     bool tokens_ended_ = false;
 };
 
@@ -658,13 +691,14 @@ StyleSheet::~StyleSheet() = default;
 StyleSheet::StyleSheet(StyleSheet&&) noexcept = default;
 StyleSheet& StyleSheet::operator=(StyleSheet&&) noexcept = default;
 
-void StyleSheet::parse(std::string_view css, std::vector<CssProblem>& problems) {
+void StyleSheet::parse(std::string_view css, std::vector<CssProblem>& problems,
+                       const MediaContext& media) {
     if (data_->full) {
         problems.push_back({1, "the selector limit was reached before this sheet; ignored"});
     } else if (css.size() >= std::numeric_limits<std::uint32_t>::max()) {
         problems.push_back({1, "over 4 GiB of CSS; ignored"});
     } else {
-        css_detail::Parser(css, problems).sheet(*data_);
+        css_detail::Parser(css, problems, media).sheet(*data_);
     }
 }
 

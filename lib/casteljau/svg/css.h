@@ -12,9 +12,11 @@
 //   declaration  = ident ':' value [ '!' 'important' ]               CSS Syntax 3, 5.4.6
 //
 // with comments, strings, escapes and blocks as CSS Syntax 3, 4 tokenizes
-// them. At-rules (@import, @media, @font-face, ...) are skipped whole, their
-// `{}` block balanced (5.4.2); the document's <style> text is all that is
-// read, so no file and no URL is ever fetched.
+// them. @media rules are read as a picture answers their query
+// (svg/media_query.h): a matching one's block as though it stood alone, the
+// others skipped. Other at-rules (@import, @font-face, ...) are skipped
+// whole, their `{}` block balanced (5.4.2); the document's <style> text is
+// all that is read, so no file and no URL is ever fetched.
 //
 // Errors are recovered from as CSS says: a rule whose selector list holds an
 // invalid selector is dropped whole (Selectors 4, 4.1: "an invalid selector
@@ -44,6 +46,8 @@
 // pathological cases (many universal selectors on a huge document).
 #pragma once
 
+#include "casteljau/svg/media_query.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -70,6 +74,9 @@ inline constexpr int kCssMaxCompounds = 32;
 inline constexpr int kCssMaxNesting = 4;
 /// Tokens in one rule's selector list; a longer list drops its rule.
 inline constexpr std::size_t kCssMaxPreludeTokens = 65'536;
+/// @media rules nested deeper than this are skipped with their blocks: the
+/// parser reads a matching one's block by recursion.
+inline constexpr int kMaxMediaDepth = 16;
 /// The default work limit of a CssMatcher, in compound-selector tests:
 /// some 4 s on one core at the 40 ns a test costs in the worst case measured
 /// (2000 `.cN *` rules), and 100 tests for each of a million elements, where
@@ -144,7 +151,9 @@ class StyleSheet {
     /// `<style>` elements, call it once each, in document order: later rules win ties.
     /// Problems are appended to `problems`, their lines within `css`.
     /// Earlier declarations stay at their addresses.
-    void parse(std::string_view css, std::vector<CssProblem>& problems);
+    /// `media` answers \@media queries (svg/media_query.h).
+    void parse(std::string_view css, std::vector<CssProblem>& problems,
+               const MediaContext& media = {});
 
     /// True when no selector was kept (no rule can match anything).
     bool empty() const;

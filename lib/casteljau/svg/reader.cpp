@@ -360,7 +360,7 @@ void Reader::read_style_sheets(const pugi::xml_node& root) {
                          " bytes, over the limit of " +
                          std::to_string(options_.max_attribute_bytes) + " bytes");
         std::vector<CssProblem> problems;
-        sheet_.parse(css, problems);
+        sheet_.parse(css, problems, MediaContext{options_.dark});
         for (const CssProblem& p : problems) {
             // The problem's line within the sheet, from the <style> element's.
             SvgDiagnostic d = located(st, "style sheet: " + p.message);

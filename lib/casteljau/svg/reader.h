@@ -51,6 +51,9 @@ struct SvgOptions {
     double max_size = 16384; ///< document width and height, px
     /// The user's languages, for systemLanguage (conditional.h).
     std::vector<std::string> languages{"en"};
+    /// The color scheme that \@media (prefers-color-scheme) matches in style
+    /// sheets (svg/media_query.h): light, or dark when set.
+    bool dark = false;
     /// The first problem in the input is an error (no image), instead of a
     /// warning and the spec's recovery.
     bool strict = false;
