@@ -76,6 +76,30 @@ TEST(Color, RgbAndHslInTheLegacyAndModernForms) {
         EXPECT_FALSE(parse_color(bad)) << bad;
 }
 
+TEST(Color, HwbAndTheLabFamily) {
+    // CSS Color 4's own examples and the sRGB primaries' known coordinates.
+    const auto near8 = [](const char* text, int r, int g, int b, float a = 1) {
+        const auto c = parse_color(text);
+        ASSERT_TRUE(c) << text;
+        EXPECT_NEAR(c->r * 255, r, 0.6) << text;
+        EXPECT_NEAR(c->g * 255, g, 0.6) << text;
+        EXPECT_NEAR(c->b * 255, b, 0.6) << text;
+        EXPECT_NEAR(c->a, a, 1e-6) << text;
+    };
+    near8("hwb(120 20% 30%)", 51, 178.5, 51);
+    near8("hwb(0 60% 60% / 50%)", 127.5, 127.5, 127.5, 0.5); // past 100%: a gray of the ratio
+    near8("lch(52.2345% 72.2 56.2)", 198, 93, 6);            // 9.4's example
+    near8("LAB(100 0 0)", 255, 255, 255);
+    near8("lab(0% none none)", 0, 0, 0);
+    near8("oklab(0.627955 0.224863 0.125846)", 255, 0, 0);             // sRGB red
+    near8("oklch(51.975% 0.176858 142.495 / 0.25)", 0, 128, 0, 0.25f); // CSS green
+    near8("oklch(45.2% 0.3132 264.05)", 0, 0, 255);
+    near8("oklch(100% 0.4 0)", 255, 32.2, 244.2); // out of gamut: R (3.64 linear) clipped
+    for (const char* bad : {"lab(50, 40, 59)", "oklch(50% 0.1 1%)", "hwb(120, 20%, 30%)",
+                            "lab(50% 40)", "oklab(1 2 3 4)", "lch(50deg 1 1)"})
+        EXPECT_FALSE(parse_color(bad)) << bad;
+}
+
 TEST(Length, EveryUnitAgainstWhatItIsRelativeTo) {
     LengthContext ctx;
     ctx.font_size = 20;

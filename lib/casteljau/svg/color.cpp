@@ -1,5 +1,6 @@
 #include "casteljau/svg/color.h"
 
+#include "casteljau/svg/color_spaces.h"
 #include "casteljau/svg/detail/ascii.h"
 
 #include <algorithm>
@@ -297,6 +298,26 @@ std::optional<Rgba> parse_rgb(std::string_view inside) {
     return Rgba{c[0], c[1], c[2], *alpha};
 }
 
+// A hue in degrees: a number, or an angle in deg, grad, rad or turn.
+std::optional<double> hue_degrees(const Arg& h) {
+    if (h.unit.empty() || h.unit == "deg") return h.value;
+    if (h.unit == "grad") return h.value * 0.9;
+    if (h.unit == "rad") return h.value * 180 / std::numbers::pi;
+    if (h.unit == "turn") return h.value * 360;
+    return std::nullopt;
+}
+
+// CSS Color 4's hsl-to-rgb (7.1), s and l in [0, 1].
+Rgba hsl_to_rgb(double deg, double s, double l, float alpha) {
+    const double hue = std::fmod(std::fmod(deg, 360) + 360, 360);
+    const auto f = [&](double n) {
+        const double k = std::fmod(n + hue / 30, 12);
+        const double a = s * std::min(l, 1 - l);
+        return float(l - a * std::max(-1.0, std::min({k - 3, 9 - k, 1.0})));
+    };
+    return Rgba{f(0), f(8), f(4), alpha};
+}
+
 // hsl() and hsla() (CSS Color 4, 7): the hue in degrees (a number or an
 // angle), saturation and lightness as percentages (the modern form also takes
 // numbers, as percentages without the sign), then the spec's hsl-to-rgb.
@@ -304,16 +325,8 @@ std::optional<Rgba> parse_hsl(std::string_view inside) {
     const auto args = split_args(inside);
     if (!args) return std::nullopt;
     const auto alpha = alpha_of(args->v);
-    const Arg& h = args->v[0];
-    double deg = h.value;
-    if (h.unit == "grad")
-        deg *= 0.9;
-    else if (h.unit == "rad")
-        deg *= 180 / std::numbers::pi;
-    else if (h.unit == "turn")
-        deg *= 360;
-    else if (h.unit == "%")
-        return std::nullopt;
+    const std::optional<double> deg = hue_degrees(args->v[0]);
+    if (!deg) return std::nullopt;
     double sl[2];
     for (int i = 0; i < 2; ++i) {
         const Arg& a = args->v[std::size_t(i) + 1];
@@ -321,13 +334,62 @@ std::optional<Rgba> parse_hsl(std::string_view inside) {
         sl[i] = std::clamp(a.value / 100, 0.0, 1.0);
     }
     if (!alpha) return std::nullopt;
-    const double hue = std::fmod(std::fmod(deg, 360) + 360, 360);
-    const auto f = [&](double n) {
-        const double k = std::fmod(n + hue / 30, 12);
-        const double a = sl[0] * std::min(sl[1], 1 - sl[1]);
-        return float(sl[1] - a * std::max(-1.0, std::min({k - 3, 9 - k, 1.0})));
+    return hsl_to_rgb(*deg, sl[0], sl[1], *alpha);
+}
+
+// hwb() (CSS Color 4, 8): hue, whiteness, blackness (percentages, or numbers
+// as percentages), modern form only; whiteness and blackness adding up past
+// 100% make a gray of their ratio.
+std::optional<Rgba> parse_hwb(std::string_view inside) {
+    const auto args = split_args(inside);
+    if (!args || args->legacy) return std::nullopt;
+    const auto alpha = alpha_of(args->v);
+    const std::optional<double> deg = hue_degrees(args->v[0]);
+    double wb[2];
+    for (int i = 0; i < 2; ++i) {
+        const Arg& a = args->v[std::size_t(i) + 1];
+        if (!a.unit.empty() && a.unit != "%") return std::nullopt;
+        wb[i] = std::clamp(a.value / 100, 0.0, 1.0);
+    }
+    if (!alpha || !deg) return std::nullopt;
+    if (wb[0] + wb[1] >= 1) {
+        const float gray = float(wb[0] / (wb[0] + wb[1]));
+        return Rgba{gray, gray, gray, *alpha};
+    }
+    const Rgba pure = hsl_to_rgb(*deg, 1, 0.5, 1);
+    const auto mix = [&](float c) { return float(c * (1 - wb[0] - wb[1]) + wb[0]); };
+    return Rgba{mix(pure.r), mix(pure.g), mix(pure.b), *alpha};
+}
+
+// lab(), lch(), oklab() and oklch() (CSS Color 4, 9 and 10; conversions in
+// color_spaces.h), modern form only: lightness a number or a percentage of
+// `l_full`, a/b or chroma numbers or percentages of `ab_full` (chroma not
+// below 0), the hue an angle.
+std::optional<Rgba> parse_lab_family(std::string_view inside, bool polar, bool ok) {
+    const auto args = split_args(inside);
+    if (!args || args->legacy) return std::nullopt;
+    const auto alpha = alpha_of(args->v);
+    const double l_full = ok ? 1 : 100, ab_full = ok ? 0.4 : polar ? 150 : 125;
+    const auto scaled = [&](const Arg& a, double full) -> std::optional<double> {
+        if (a.unit == "%") return a.value / 100 * full;
+        if (!a.unit.empty()) return std::nullopt;
+        return a.value;
     };
-    return Rgba{f(0), f(8), f(4), *alpha};
+    const std::optional<double> l = scaled(args->v[0], l_full);
+    std::optional<double> a = scaled(args->v[1], ab_full);
+    std::optional<double> b;
+    if (polar) {
+        const std::optional<double> deg = hue_degrees(args->v[2]);
+        if (deg && a) {
+            const double c = std::max(*a, 0.0), h = *deg * std::numbers::pi / 180;
+            b = c * std::sin(h), a = c * std::cos(h);
+        }
+    } else {
+        b = scaled(args->v[2], ab_full);
+    }
+    if (!alpha || !l || !a || !b) return std::nullopt;
+    const double lc = std::clamp(*l, 0.0, l_full);
+    return ok ? oklab_to_srgb(lc, *a, *b, *alpha) : lab_to_srgb(lc, *a, *b, *alpha);
 }
 
 // "name(" ... ")" of a functional notation, the inside; nullopt otherwise.
@@ -354,6 +416,12 @@ std::optional<Rgba> parse_color(std::string_view text) {
         if (const auto inside = function_args(lower, f)) return parse_rgb(trim(*inside));
     for (const char* f : {"hsl", "hsla"})
         if (const auto inside = function_args(lower, f)) return parse_hsl(trim(*inside));
+    if (const auto inside = function_args(lower, "hwb")) return parse_hwb(trim(*inside));
+    for (const bool ok : {false, true})
+        for (const bool polar : {false, true})
+            if (const auto inside = function_args(lower, ok ? (polar ? "oklch" : "oklab")
+                                                            : (polar ? "lch" : "lab")))
+                return parse_lab_family(trim(*inside), polar, ok);
     if (lower == "transparent") return Rgba{0, 0, 0, 0};
     const auto it = std::lower_bound(
         kNamed.begin(), kNamed.end(), lower,
