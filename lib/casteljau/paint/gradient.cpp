@@ -160,7 +160,7 @@ void GradientShader::shade_linear(int x, int y, int n, Premul* out) const {
     for (int i = 0; i < n; ++i) out[i] = lut_[entry(spread(linear_.x * (x + i + 0.5) + row, S))];
 }
 
-template <Spread S>
+template <Spread S, bool Ring>
 void GradientShader::shade_radial(int x, int y, int n, Premul* out) const {
     const Gradient& g = *g_;
     if (g.radius <= 0) { // zero radius: the last stop (13.2.3)
@@ -169,39 +169,46 @@ void GradientShader::shade_radial(int x, int y, int n, Premul* out) const {
     }
     // The formulas above with d = inverse (X, Y) - f: along a row d is
     // (m.a X, m.b X) plus a row constant, and the per-shader constants
-    // (e, a and 1 / a) leave the loop.
+    // (e, a and 1 / a) leave the loop. Without a start circle (Ring false:
+    // r0 = 0, t0 = 0, t1 = 1) the terms of r0 and t0 drop out: 10% of the
+    // radial scene's frame.
     const Affine& m = inverse_;
     const RadialForm& r = radial_;
     const Vec2 e = r.center - r.focal;
     const double a = e.length_sq() - r.dr * r.dr, inv_a = 1 / a;
-    const double r0dr = r.r0 * r.dr, r0_sq = r.r0 * r.r0;
-    // t0 + t1 t' folded into the division's factor: exact for the usual
-    // (0, 1), which keeps every pixel as it was before fr.
-    const double scale = r.t1 * inv_a;
+    const double r0dr = r.r0 * r.dr, r0_sq = r.r0 * r.r0, scale = r.t1 * inv_a;
     const double cy = y + 0.5;
     const Vec2 row{m.c * cy + m.e - r.focal.x, m.d * cy + m.f - r.focal.y};
     for (int i = 0; i < n; ++i) {
         const double cx = x + i + 0.5;
         const Vec2 d{m.a * cx + row.x, m.b * cx + row.y};
-        const double b = d.dot(e) + r0dr;
-        const double t =
-            r.t0 + (b - std::sqrt(std::max(0.0, b * b - a * (d.length_sq() - r0_sq)))) * scale;
+        double t;
+        if constexpr (Ring) {
+            const double b = d.dot(e) + r0dr;
+            t = r.t0 + (b - std::sqrt(std::max(0.0, b * b - a * (d.length_sq() - r0_sq)))) * scale;
+        } else {
+            const double b = d.dot(e);
+            t = (b - std::sqrt(std::max(0.0, b * b - a * d.length_sq()))) * inv_a;
+        }
         out[i] = lut_[entry(spread(t, S))];
     }
 }
 
+template <Spread S>
+void GradientShader::shade_spread(int x, int y, int n, Premul* out) const {
+    if (g_->kind == Gradient::Kind::Linear) return shade_linear<S>(x, y, n, out);
+    if (radial_.r0 > 0 || radial_.t1 != 1) return shade_radial<S, true>(x, y, n, out);
+    shade_radial<S, false>(x, y, n, out);
+}
+
 void GradientShader::shade(int x, int y, int n, Premul* out) const {
-    const bool linear = g_->kind == Gradient::Kind::Linear;
     switch (g_->spread) {
     case Spread::Pad:
-        return linear ? shade_linear<Spread::Pad>(x, y, n, out)
-                      : shade_radial<Spread::Pad>(x, y, n, out);
+        return shade_spread<Spread::Pad>(x, y, n, out);
     case Spread::Repeat:
-        return linear ? shade_linear<Spread::Repeat>(x, y, n, out)
-                      : shade_radial<Spread::Repeat>(x, y, n, out);
+        return shade_spread<Spread::Repeat>(x, y, n, out);
     case Spread::Reflect:
-        return linear ? shade_linear<Spread::Reflect>(x, y, n, out)
-                      : shade_radial<Spread::Reflect>(x, y, n, out);
+        return shade_spread<Spread::Reflect>(x, y, n, out);
     }
 }
 

@@ -99,8 +99,10 @@ class GradientShader {
     void build_table(const Gradient& g, float opacity, bool linear_light);
     template <Spread S>
     void shade_linear(int x, int y, int n, Premul* out) const;
-    template <Spread S>
+    template <Spread S, bool Ring>
     void shade_radial(int x, int y, int n, Premul* out) const;
+    template <Spread S>
+    void shade_spread(int x, int y, int n, Premul* out) const;
 
     const Gradient* g_ = nullptr;
     /// What the table was built from: compared by value, so a table is never
