@@ -124,6 +124,34 @@ const Shape& shape_at(const Scene& s, std::size_t i) {
     return std::get<Shape>(s.root.children.at(i).item);
 }
 
+TEST(Length, CalcMinMaxAndClamp) {
+    // CSS Values 4, 10 (svg/css_math.h): each leaf resolved by the length
+    // rules (em of 16 px, % of 200).
+    LengthContext ctx;
+    ctx.font_size = 16;
+    const auto at = [&](const char* text) { return parse_length(text, 200, ctx); };
+    EXPECT_EQ(at("calc(10px + 2em)"), 42.0);
+    EXPECT_EQ(at(" calc(50% - 10px) "), 90.0);
+    EXPECT_EQ(at("calc(2 * 3px)"), 6.0);
+    EXPECT_EQ(at("calc(3px * 2 / 4)"), 1.5);
+    EXPECT_EQ(at("calc((1px + 2px) * -3)"), -9.0);
+    EXPECT_EQ(at("CALC(1PX + calc(1px))"), 2.0);
+    EXPECT_EQ(at("min(10px, 2em, 30%)"), 10.0);
+    EXPECT_EQ(at("max(1px, 5%)"), 10.0);
+    EXPECT_EQ(at("clamp(1px, 50px, 20px)"), 20.0);
+    EXPECT_EQ(at("calc(1 + 2)"), 3.0) << "a number: user units, as in an SVG length";
+    std::string deep = "1px";
+    for (int i = 0; i < 40; ++i) deep = "calc(" + deep + ")";
+    for (const std::string& bad :
+         {std::string("calc(10px + 2)"), std::string("calc(1px * 2px)"),
+          std::string("calc(1px / 0)"), std::string("calc(1px / 2px)"),
+          std::string("calc(10px -5px)"), std::string("calc(10px+5px)"), std::string("calc(1px"),
+          std::string("calc()"), std::string("min()"), std::string("clamp(1px, 2px)"),
+          std::string("calc(1px) x"), std::string("calc(1qq)"), std::string("calc(1e308px * 10)"),
+          deep})
+        EXPECT_FALSE(at(bad.c_str())) << bad;
+}
+
 TEST(Length, EmAndPercentagesThroughTheCascade) {
     // font-size inherits as a computed length; em in an element's own
     // attributes uses its own font-size, even when set after them (in its

@@ -2,6 +2,7 @@
 
 #include "casteljau/paint/blend.h"
 #include "casteljau/svg/color.h"
+#include "casteljau/svg/css_math.h"
 #include "casteljau/svg/detail/ascii.h"
 #include "casteljau/svg/filter_functions.h"
 
@@ -149,6 +150,10 @@ double LengthContext::diagonal() const {
 
 std::optional<double> parse_length(std::string_view text, double percent_of,
                                    const LengthContext& ctx) {
+    if (is_css_math(text))
+        return eval_css_math(text, [&](std::string_view leaf) {
+            return parse_length(leaf, percent_of, ctx);
+        });
     std::string_view unit;
     const auto v = parse_number(text, &unit);
     if (!v) return std::nullopt;
