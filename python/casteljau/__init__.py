@@ -82,7 +82,8 @@ def _source(source):
 
 def render_svg(source, *, width=None, height=None, scale=None, background=None,
                tolerance=0.25, threads=0, pixels="u8", strict=False, canvas="auto",
-               method="guided", segments=None, antialias=True, gradient_interpolation="srgb"):
+               method="guided", segments=None, antialias=True, gradient_interpolation="srgb",
+               color_scheme="light"):
     """Renders an SVG document to a NumPy array of straight RGBA pixels.
 
     source: a path (str or os.PathLike), SVG text (a str whose first non-blank
@@ -113,6 +114,8 @@ def render_svg(source, *, width=None, height=None, scale=None, background=None,
         segments per curve.
       antialias: exact-area coverage (True) or pixel centres (False).
       gradient_interpolation: "srgb" (SVG 1.1) or "linear" (linear light).
+      color_scheme: what style sheets' @media (prefers-color-scheme) see:
+        "light" (the default) or "dark".
 
     Returns an (H, W, 4) numpy array. Each recovered problem in the file is
     issued as an SvgWarning. Raises ValueError with the CLI's message
@@ -124,7 +127,7 @@ def render_svg(source, *, width=None, height=None, scale=None, background=None,
         path, text, name, width=width, height=height, scale=scale, background=background,
         tolerance=tolerance, threads=threads, pixels=pixels, canvas=canvas, strict=strict,
         method=method, segments=segments, antialias=antialias,
-        gradient_interpolation=gradient_interpolation)
+        gradient_interpolation=gradient_interpolation, color_scheme=color_scheme)
     for text in warnings:
         _warnings.warn(text, SvgWarning, stacklevel=2)
     return array
@@ -132,7 +135,8 @@ def render_svg(source, *, width=None, height=None, scale=None, background=None,
 
 def render_file(source_path, output_path, *, width=None, height=None, scale=None,
                 background=None, tolerance=0.25, threads=1, pixels="auto", strict=False,
-                method="guided", segments=None, antialias=True, gradient_interpolation="srgb"):
+                method="guided", segments=None, antialias=True, gradient_interpolation="srgb",
+                color_scheme="light"):
     """Renders an SVG file to an image file, as ``casteljau render IN -o OUT``.
 
     The format follows output_path's extension (png, tif, exr, jpg), and the
@@ -153,4 +157,4 @@ def render_file(source_path, output_path, *, width=None, height=None, scale=None
         _os.fsdecode(source_path), _os.fsdecode(output_path), width=width, height=height,
         scale=scale, background=background, tolerance=tolerance, threads=threads,
         pixels=pixels, strict=strict, method=method, segments=segments, antialias=antialias,
-        gradient_interpolation=gradient_interpolation)
+        gradient_interpolation=gradient_interpolation, color_scheme=color_scheme)

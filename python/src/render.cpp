@@ -42,7 +42,7 @@ Request make_request(std::optional<double> width, std::optional<double> height,
                      std::optional<double> scale, py::handle background, double tolerance,
                      int threads, const std::string& canvas, bool strict, const std::string& method,
                      std::optional<int> segments, bool antialias,
-                     const std::string& gradient_interpolation) {
+                     const std::string& gradient_interpolation, const std::string& color_scheme) {
     Request r;
     if (int(width.has_value()) + int(height.has_value()) + int(scale.has_value()) > 1)
         value_error("give at most one of width, height and scale");
@@ -68,6 +68,9 @@ Request make_request(std::optional<double> width, std::optional<double> height,
         value_error("canvas pixels '" + canvas + "': expected 'float' or 'u8'");
     r.canvas_u8 = canvas == "u8";
     r.svg.strict = strict;
+    if (color_scheme != "light" && color_scheme != "dark")
+        value_error("color_scheme '" + color_scheme + "': expected 'light' or 'dark'");
+    r.svg.dark = color_scheme == "dark";
     return r;
 }
 
@@ -120,11 +123,12 @@ py::tuple render_svg(std::optional<std::string> path, std::optional<std::string>
                      py::object background, double tolerance, int threads,
                      const std::string& pixels, const std::string& canvas, bool strict,
                      const std::string& method, std::optional<int> segments, bool antialias,
-                     const std::string& gradient_interpolation) {
+                     const std::string& gradient_interpolation, const std::string& color_scheme) {
     // Auto: the canvas of the array's type, as the CLI's for a file's.
     const std::string drawn_on = canvas != "auto" ? canvas : pixels == "float32" ? "float" : "u8";
-    const Request r = make_request(width, height, scale, background, tolerance, threads, drawn_on,
-                                   strict, method, segments, antialias, gradient_interpolation);
+    const Request r =
+        make_request(width, height, scale, background, tolerance, threads, drawn_on, strict, method,
+                     segments, antialias, gradient_interpolation, color_scheme);
     if (pixels != "u8" && pixels != "float32")
         value_error("pixels '" + pixels + "': expected 'u8' or 'float32'");
     if (!path && !text) throw py::type_error("render_svg: no source");
@@ -156,12 +160,13 @@ py::dict render_file(const std::string& input, const std::string& output,
                      std::optional<double> scale, py::object background, double tolerance,
                      int threads, const std::string& pixels, bool strict, const std::string& method,
                      std::optional<int> segments, bool antialias,
-                     const std::string& gradient_interpolation) {
+                     const std::string& gradient_interpolation, const std::string& color_scheme) {
     const auto t0 = Clock::now();
     // Auto: the CLI's --pixels auto, 8-bit for 8-bit files, float for EXR and TIFF.
     const std::string drawn_on = pixels != "auto" ? pixels : stores_float(output) ? "float" : "u8";
-    const Request r = make_request(width, height, scale, background, tolerance, threads, drawn_on,
-                                   strict, method, segments, antialias, gradient_interpolation);
+    const Request r =
+        make_request(width, height, scale, background, tolerance, threads, drawn_on, strict, method,
+                     segments, antialias, gradient_interpolation, color_scheme);
     std::vector<std::string> warnings;
     const Scene scene = load(r, &input, nullptr, input, warnings);
     const double parse_ms = ms(Clock::now() - t0);
@@ -203,14 +208,14 @@ void bind_render(py::module_& m) {
           "width"_a = py::none(), "height"_a = py::none(), "scale"_a = py::none(),
           "background"_a = py::none(), "tolerance"_a = 0.25, "threads"_a = 0, "pixels"_a = "u8",
           "canvas"_a = "auto", "strict"_a = false, "method"_a = "guided", "segments"_a = py::none(),
-          "antialias"_a = true, "gradient_interpolation"_a = "srgb",
+          "antialias"_a = true, "gradient_interpolation"_a = "srgb", "color_scheme"_a = "light",
           "Renders an SVG file (path) or text (with `name` for messages); returns (array, "
           "warnings). See casteljau.render_svg.");
     m.def("_render_file", &render_file, "input"_a, "output"_a, py::kw_only(),
           "width"_a = py::none(), "height"_a = py::none(), "scale"_a = py::none(),
           "background"_a = py::none(), "tolerance"_a = 0.25, "threads"_a = 1, "pixels"_a = "auto",
           "strict"_a = false, "method"_a = "guided", "segments"_a = py::none(),
-          "antialias"_a = true, "gradient_interpolation"_a = "srgb",
+          "antialias"_a = true, "gradient_interpolation"_a = "srgb", "color_scheme"_a = "light",
           "Renders an SVG file to an image file; returns the stats. See casteljau.render_file.");
 }
 

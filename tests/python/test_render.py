@@ -99,10 +99,28 @@ def test_size_options():
     (dict(segments=4), "segments: only with method='uniform'"),
     (dict(threads=-1), "threads -1"),
     (dict(scale=1e6), "<bytes>: output size 40000000 x 30000000 px is outside the limits"),
+    (dict(color_scheme="blue"), "color_scheme 'blue'"),
 ])
 def test_bad_options_raise_value_error(options, message):
     with pytest.raises(ValueError, match=message.replace("(", r"\(")):
         casteljau.render_svg(SMALL, **options)
+
+
+DARK = b'<svg xmlns="http://www.w3.org/2000/svg" width="4" height="4"><style>rect { fill: #000 }' \
+       b' @media (prefers-color-scheme: dark) { rect { fill: #fff } }</style>' \
+       b'<rect width="4" height="4"/></svg>'
+
+
+def test_color_scheme_answers_media_queries(cli, tmp_path):
+    assert casteljau.render_svg(DARK)[0, 0].tolist() == [0, 0, 0, 255]
+    dark = casteljau.render_svg(DARK, color_scheme="dark")
+    assert dark[0, 0].tolist() == [255] * 4
+    svg, out = tmp_path / "dark.svg", tmp_path / "dark.png"
+    svg.write_bytes(DARK)
+    run_cli(cli, "render", svg, "-o", out, "--color-scheme", "dark")
+    assert np.array_equal(dark, decode_png(out))
+    stats = casteljau.render_file(svg, tmp_path / "lib.png", color_scheme="dark")
+    assert np.array_equal(decode_png(tmp_path / "lib.png"), dark) and stats["warnings"] == []
 
 
 def test_options_are_keyword_only():
