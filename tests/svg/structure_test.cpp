@@ -378,6 +378,16 @@ TEST(TransformBox, FillBoxIsTheElementsOwnBox) {
     expect_box(*s[5], {12, 172, 52, 192}, "about the stroke box's corner");
 }
 
+TEST(TransformBox, AMeasuredShapesProblemIsToldOnce) {
+    // Measuring the fill box reads the geometry a second time, quietly.
+    const SvgResult r = read(R"svg(<rect width="10" height="10" x="1q"
+        style="transform-box: fill-box; transform: scale(2)"/>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].text().find("attribute x: '1q'"), std::string::npos)
+        << r.warnings[0].text();
+}
+
 TEST(TransformBox, NestedFillBoxGroupsAreMeasuredOnceEach) {
     // Each group measures what it draws by walking it once; without the
     // measured boxes kept, 40 nested groups would walk the leaf 2^40 times.
