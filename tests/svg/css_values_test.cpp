@@ -78,7 +78,7 @@ TEST(Color, RgbAndHslInTheLegacyAndModernForms) {
 
 TEST(Color, HwbAndTheLabFamily) {
     // CSS Color 4's own examples and the sRGB primaries' known coordinates.
-    const auto near8 = [](const char* text, int r, int g, int b, float a = 1) {
+    const auto near8 = [](const char* text, double r, double g, double b, float a = 1) {
         const auto c = parse_color(text);
         ASSERT_TRUE(c) << text;
         EXPECT_NEAR(c->r * 255, r, 0.6) << text;
