@@ -6,7 +6,8 @@ Usage::
         [--scheduler ADDRESS] [--resume] [--log FILE.jsonl] [--group-bytes B] [--group-files N]
         [--width W | --height H | --scale S] [--tolerance PX]
         [--flatten guided|integral|adaptive|uniform|halving] [--segments N] [--antialias on|off]
-        [--gradient-interpolation srgb|linear] [--background COLOR] [--pixels auto|float|u8]
+        [--gradient-interpolation srgb|linear] [--color-scheme light|dark]
+        [--background COLOR] [--pixels auto|float|u8]
         [--strict] [--format png|tif|exr|jpg] [--render-threads N]
 
 The same render as ``casteljau render IN.svg -o OUT.png`` (same options, same pixels: every
@@ -253,6 +254,8 @@ def build_parser():
     r.add_argument("--antialias", choices=("on", "off"), help="on (default) or off")
     r.add_argument("--gradient-interpolation", choices=("srgb", "linear"),
                    help="srgb (default) or linear")
+    r.add_argument("--color-scheme", choices=("light", "dark"),
+                   help="what @media (prefers-color-scheme) sees: light (default) or dark")
     r.add_argument("--background", metavar="COLOR", help="background color (default transparent)")
     r.add_argument("--pixels", choices=("auto", "float", "u8"), default="auto",
                    help="the canvas: auto (default: u8 for 8-bit formats, float for exr and "
@@ -280,6 +283,8 @@ def _render_options(args):
         options["antialias"] = args.antialias == "on"
     if args.gradient_interpolation is not None:
         options["gradient_interpolation"] = args.gradient_interpolation
+    if args.color_scheme is not None:
+        options["color_scheme"] = args.color_scheme
     return options
 
 

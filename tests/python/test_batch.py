@@ -204,6 +204,14 @@ def test_help_documents_the_options():
         assert option in run.stdout, option
 
 
+def test_render_options_are_render_files():
+    from casteljau import batch as b
+    args = b.build_parser().parse_args(["in", "out", "--color-scheme", "dark", "--antialias", "off"])
+    options = b._render_options(args)
+    assert options["color_scheme"] == "dark" and options["antialias"] is False
+    assert "color_scheme" not in b._render_options(b.build_parser().parse_args(["in", "out"]))
+
+
 def test_groups_follow_bytes_and_count(tmp_path):
     sizes = [100, 100, 300, 50, 50, 50, 1000]
     for i, size in enumerate(sizes):
