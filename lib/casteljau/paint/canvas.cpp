@@ -86,7 +86,7 @@ template <class Pixel>
 void BasicCanvas<Pixel>::reset(int width, int height, int ox, int oy, Premul clear) {
     w_ = width, h_ = height, ox_ = ox, oy_ = oy;
     view_ = nullptr;
-    stale_.clear();
+    clean_.clear();
     px_.assign(std::size_t(width) * std::size_t(height), pixel_of<Pixel>(clear));
 }
 
@@ -94,7 +94,7 @@ template <class Pixel>
 void BasicCanvas<Pixel>::resize(int width, int height) {
     w_ = width, h_ = height, ox_ = 0, oy_ = 0;
     view_ = nullptr;
-    stale_.clear();
+    clean_.clear();
     px_.resize(std::size_t(width) * std::size_t(height));
 }
 
@@ -102,40 +102,43 @@ template <class Pixel>
 void BasicCanvas<Pixel>::view_rows(BasicCanvas& parent, int y0, int rows, Premul clear) {
     w_ = parent.w_, h_ = rows, ox_ = parent.ox_, oy_ = parent.oy_ + y0;
     view_ = parent.row(y0);
-    stale_.assign(std::size_t(rows), 1);
+    clean_.assign(std::size_t(rows), 0);
     clear_ = pixel_of<Pixel>(clear);
 }
 
 template <class Pixel>
 void BasicCanvas<Pixel>::settle() {
-    for (int y = 0; y < int(stale_.size()); ++y) row(y);
+    for (int y = 0; y < int(clean_.size()); ++y) row(y);
 #if defined(__SSE2__)
     _mm_sfence(); // streamed stores (store_run) are visible before the band is handed on
 #endif
 }
 
 template <class Pixel>
-void BasicCanvas<Pixel>::clear_row_except(Pixel* r, int y, int x0, int x1) {
+void BasicCanvas<Pixel>::clear_columns(Pixel* r, int y, int x1) {
     // From a local: an 8-bit pixel's channels are chars, which may alias
     // anything, so stores through r could change the member clear_ for all
     // GCC knows, and it reloads it for every pixel (scalar 4-byte stores).
     const Pixel c = clear_;
-    fill_run(r, x0, c);
-    const int rest = std::max(x0, x1);
-    fill_run(r + rest, w_ - rest, c);
-    stale_[std::size_t(y)] = 0;
+    int& clean = clean_[std::size_t(y)];
+    fill_run(r + clean, x1 - clean, c);
+    clean = x1;
 }
 
 template <class Pixel>
 void BasicCanvas<Pixel>::fill(Premul color) {
     const Pixel c = pixel_of<Pixel>(color);
     for (int y = 0; y < h_; ++y) fill_run(pixels() + std::size_t(y) * std::size_t(w_), w_, c);
-    std::fill(stale_.begin(), stale_.end(), 0);
+    std::fill(clean_.begin(), clean_.end(), w_);
 }
 
 template <class Pixel>
 void BasicCanvas<Pixel>::store_span(int y, int x, int len, const Premul& c) {
-    store_run(row_except(y, x, x + len) + x, len, pixel_of<Pixel>(c));
+    // The columns left of the run that await the clear are cleared; the
+    // run's own are overwritten, so the cursor passes them uncleared.
+    Pixel* r = row_to(y, x);
+    if (!clean_.empty()) clean_[std::size_t(y)] = std::max(clean_[std::size_t(y)], x + len);
+    store_run(r + x, len, pixel_of<Pixel>(c));
 }
 
 template <class Pixel>

@@ -72,10 +72,11 @@ class BasicCanvas {
     /// Makes this canvas a view of `rows` whole rows of `parent` from row y0
     /// (its own storage is kept, unused): a band drawn in place, with no copy.
     /// Valid while the parent keeps its size. The rows are cleared to `clear`
-    /// lazily: each when it is first written (row() or composite_span), so
-    /// the clear and the drawing meet in the cache, and a row whose first
-    /// write is an opaque run is cleared only around it. settle() clears the
-    /// rows never written; call it before reading the pixels.
+    /// lazily, each from the left up to where it is written (row() clears a
+    /// whole row, composite_span up to the span's end), so the clear and the
+    /// drawing meet in the cache, and no pixel under an opaque run is cleared
+    /// first. settle() clears what was never written; call it before reading
+    /// the pixels.
     void view_rows(BasicCanvas& parent, int y0, int rows, Premul clear);
     /// Clears the rows of a view_rows band that nothing has written yet.
     void settle();
@@ -89,7 +90,7 @@ class BasicCanvas {
     /// Row of the parent (or frame) where this canvas starts.
     int origin_y() const { return oy_; }
     /// The pixels of row y (0 <= y < height()), for writing.
-    Pixel* row(int y) { return row_except(y, 0, 0); }
+    Pixel* row(int y) { return row_to(y, w_); }
     /// The pixels of row y (0 <= y < height()), read-only; for a view_rows
     /// band, only after settle() (an unwritten row is not cleared before).
     const Pixel* row(int y) const { return pixels() + std::size_t(y) * std::size_t(w_); }
@@ -116,20 +117,24 @@ class BasicCanvas {
     void composite_at(int y, int x, const Span& s, const Premul& c);
     /// An opaque run of len pixels from row y, column x: a store (streamed when long).
     void store_span(int y, int x, int len, const Premul& c);
-    /// Row y for writing; a row still awaiting its clear is cleared first,
-    /// except for the columns [x0, x1), which the caller overwrites.
-    Pixel* row_except(int y, int x0, int x1) {
+    /// Row y, its columns [0, x1) ready for writing: those still awaiting
+    /// the clear are cleared first.
+    Pixel* row_to(int y, int x1) {
         Pixel* r = pixels() + std::size_t(y) * std::size_t(w_);
-        if (!stale_.empty() && stale_[std::size_t(y)]) clear_row_except(r, y, x0, x1);
+        if (!clean_.empty() && clean_[std::size_t(y)] < x1) clear_columns(r, y, x1);
         return r;
     }
-    void clear_row_except(Pixel* r, int y, int x0, int x1);
+    /// Clears the columns [clean_[y], x1) of row r = row y and moves its cursor to x1.
+    void clear_columns(Pixel* r, int y, int x1);
     Pixel* pixels() { return view_ ? view_ : px_.data(); }
     const Pixel* pixels() const { return view_ ? view_ : px_.data(); }
     std::vector<Pixel> px_;
-    Pixel* view_ = nullptr;            // another canvas's rows (view_rows), else null
-    std::vector<unsigned char> stale_; // view_rows: per row, 1 until cleared or written
-    Pixel clear_{};                    // what stale rows are cleared to
+    Pixel* view_ = nullptr; // another canvas's rows (view_rows), else null
+    // view_rows: per row, the columns [0, clean_[y]) hold pixels and the rest
+    // await the clear (a span of one shape's row is drawn left to right, so
+    // one cursor a row is enough); empty: every pixel holds one.
+    std::vector<int> clean_;
+    Pixel clear_{}; // what the columns awaiting it are cleared to
     int w_ = 0, h_ = 0, ox_ = 0, oy_ = 0;
 };
 
@@ -151,7 +156,7 @@ inline void BasicCanvas<Pixel>::composite_at(int y, int x, const Span& s, const 
         store_span(y, x, s.len, c);
         return;
     }
-    Pixel* d = row(y) + x;
+    Pixel* d = row_to(y, x + s.len) + x;
     // A shape's span on the next row usually starts near this one (outlines
     // are continuous), and rows are a stride apart that no hardware
     // prefetcher follows: ask for that pixel's line now.
