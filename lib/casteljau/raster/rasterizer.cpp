@@ -1,5 +1,7 @@
 #include "casteljau/raster/rasterizer.h"
 
+#include "casteljau/raster/box.h"
+
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -55,6 +57,7 @@ void Rasterizer::fill(const EdgeList& edges, FillRule rule, bool antialias, Span
     const int row_end = edges.row_end();
     const std::vector<Edge>& list = edges.edges();
     if (list.empty() || width_ <= 0) return;
+    if (antialias && fill_box(edges, sink)) return;
     sort_edges(list, edges.row_begin());
     if (antialias && rows_[0].width() != width_)
         for (CoverageRow& row : rows_) row.reset(width_);

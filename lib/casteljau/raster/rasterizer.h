@@ -8,7 +8,8 @@
 // with the outline and the covered spans, never with the canvas area. All
 // buffers are kept between calls.
 //
-// Antialiased mode deposits exact areas (accumulate.h). Aliased mode samples
+// Antialiased mode deposits exact areas (accumulate.h), except for a
+// rectangle's two vertical edges, whose areas are products (box.h). Aliased mode samples
 // each pixel at its centre: a pixel is inside when the fill rule holds for the
 // winding number at (x + 1/2, y + 1/2), found by crossing the row's centre line
 // with the edges; its spans have coverage 1.
