@@ -103,6 +103,7 @@ void BasicCanvas<Pixel>::view_rows(BasicCanvas& parent, int y0, int rows, Premul
     w_ = parent.w_, h_ = rows, ox_ = parent.ox_, oy_ = parent.oy_ + y0;
     view_ = parent.row(y0);
     clean_.assign(std::size_t(rows), 0);
+    open_ = -1;
     clear_ = pixel_of<Pixel>(clear);
 }
 
@@ -119,10 +120,23 @@ void BasicCanvas<Pixel>::clear_columns(Pixel* r, int y, int x1) {
     // From a local: an 8-bit pixel's channels are chars, which may alias
     // anything, so stores through r could change the member clear_ for all
     // GCC knows, and it reloads it for every pixel (scalar 4-byte stores).
+    open_row(y);
     const Pixel c = clear_;
     int& clean = clean_[std::size_t(y)];
     fill_run(r + clean, x1 - clean, c);
     clean = x1;
+}
+
+template <class Pixel>
+void BasicCanvas<Pixel>::open_row(int y) {
+    if (y == open_) return;
+    if (open_ >= 0) {
+        int& clean = clean_[std::size_t(open_)];
+        const Pixel c = clear_;
+        fill_run(pixels() + std::size_t(open_) * std::size_t(w_) + clean, w_ - clean, c);
+        clean = w_;
+    }
+    open_ = y;
 }
 
 template <class Pixel>
@@ -137,7 +151,10 @@ void BasicCanvas<Pixel>::store_span(int y, int x, int len, const Premul& c) {
     // The columns left of the run that await the clear are cleared; the
     // run's own are overwritten, so the cursor passes them uncleared.
     Pixel* r = row_to(y, x);
-    if (!clean_.empty()) clean_[std::size_t(y)] = std::max(clean_[std::size_t(y)], x + len);
+    if (!clean_.empty() && clean_[std::size_t(y)] < x + len) {
+        open_row(y);
+        clean_[std::size_t(y)] = x + len;
+    }
     store_run(r + x, len, pixel_of<Pixel>(c));
 }
 

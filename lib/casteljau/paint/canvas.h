@@ -134,6 +134,11 @@ class BasicCanvas {
     // await the clear (a span of one shape's row is drawn left to right, so
     // one cursor a row is enough); empty: every pixel holds one.
     std::vector<int> clean_;
+    // view_rows: the row written to last while it awaited the clear; when
+    // another row is written, the rest of it is cleared, while it is still
+    // in the cache (at settle(), a band later, it was not).
+    int open_ = -1;
+    void open_row(int y);
     Pixel clear_{}; // what the columns awaiting it are cleared to
     int w_ = 0, h_ = 0, ox_ = 0, oy_ = 0;
 };
