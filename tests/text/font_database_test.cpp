@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <iterator>
+#include <memory>
 #include <optional>
 #include <string>
 #include <unistd.h>
@@ -154,7 +156,102 @@ TEST(FontDatabase, FontsAreSharedPerFaceAndVariation) {
     EXPECT_EQ(c.get(), d.get());
     EXPECT_NE(a.get(), c.get());
     // A file that is not a font gives null, and matching does not offer it.
-    EXPECT_FALSE(db.font({"/nonexistent/font.ttf", 0}));
+    EXPECT_FALSE(db.font({"/nonexistent/font.ttf", 0, nullptr}));
+}
+
+} // namespace
+} // namespace casteljau::text_test
+
+namespace casteljau::text_test {
+namespace {
+
+std::shared_ptr<const std::vector<unsigned char>> bytes_of(const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::make_shared<const std::vector<unsigned char>>(std::istreambuf_iterator<char>(in),
+                                                              std::istreambuf_iterator<char>());
+}
+
+void add(FontDatabase& layer, const std::string& family, const std::string& file, int lo, int hi,
+         FontStyle style = FontStyle::Normal) {
+    std::string error;
+    ASSERT_TRUE(
+        layer.add_font_data({family, lo, hi, style}, bytes_of(kDejaVuDir + "/" + file), error))
+        << file << ": " << error;
+}
+
+// The family name the loaded font gives, or "(none)".
+std::string family_of(FontDatabase& db, const std::optional<FontFace>& f) {
+    if (!f) return "(none)";
+    const auto font = db.font(*f);
+    return font ? font->family() + (f->data ? " (memory)" : " (file)") : "(no font)";
+}
+
+// A document's fonts come first, in the order of the query's families, and
+// everything else is the parent's; the parent never sees them.
+TEST(FontDatabaseLayer, DocumentFamiliesComeFirstInTheQuerysOrder) {
+    FontDatabase& parent = test_fonts();
+    auto layer = FontDatabase::layer(parent);
+    add(*layer, "Embedded", "DejaVuSerif-Bold.ttf", 400, 400);
+    add(*layer, "DejaVu Sans", "DejaVuSansMono.ttf", 400, 400); // hides the installed one
+    EXPECT_EQ(family_of(*layer, layer->match(query("Embedded"))), "DejaVu Serif (memory)");
+    EXPECT_EQ(family_of(*layer, layer->match(query("embedded"))), "DejaVu Serif (memory)");
+    EXPECT_EQ(family_of(*layer, layer->match(query("DejaVu Sans"))), "DejaVu Sans Mono (memory)");
+    EXPECT_EQ(family_of(*layer, layer->match(query("DejaVu Serif"))), "DejaVu Serif (file)");
+    FontQuery q;
+    q.families = {"No Such Font", "Embedded"};
+    EXPECT_EQ(family_of(*layer, layer->match(q)), "DejaVu Serif (memory)");
+    q.families = {"Noto Sans", "Embedded"};
+    EXPECT_EQ(family_of(*layer, layer->match(q)), "Noto Sans (file)");
+    // A character the document's font lacks falls back to the parent's.
+    q.families = {"Embedded"};
+    const auto devanagari = layer->fallback(q, U'\u0928');
+    ASSERT_TRUE(devanagari);
+    EXPECT_FALSE(devanagari->data);
+    EXPECT_EQ(family_of(*layer, layer->fallback(q, U'A')), "DejaVu Serif (memory)");
+    EXPECT_NE(family_of(parent, parent.match(query("Embedded"))), "DejaVu Serif (memory)");
+    EXPECT_EQ(family_of(parent, parent.match(query("DejaVu Sans"))), "DejaVu Sans (file)");
+}
+
+// CSS Fonts 4, 5.2: style first, then weight by its rules.
+TEST(FontDatabaseLayer, StyleThenWeightAsCssFonts4Says) {
+    auto layer = FontDatabase::layer(test_fonts());
+    add(*layer, "F", "DejaVuSerif.ttf", 400, 400);
+    add(*layer, "F", "DejaVuSerif-Bold.ttf", 700, 700);
+    add(*layer, "F", "DejaVuSerif-Italic.ttf", 400, 400, FontStyle::Italic);
+    add(*layer, "F", "DejaVuSans-ExtraLight.ttf", 200, 200);
+    const auto file = [&](int weight, FontStyle style = FontStyle::Normal) {
+        const auto f = layer->match(query("F", weight, style));
+        return f ? f->file : std::string("(none)");
+    };
+    const auto name = [&](int weight, FontStyle style = FontStyle::Normal) {
+        const auto f = layer->match(query("F", weight, style));
+        return f ? layer->font(*f)->family() + " " + std::to_string(layer->font(*f)->glyph_count())
+                 : std::string("(none)");
+    };
+    EXPECT_EQ(file(400), "@font-face 1 (F)");
+    EXPECT_EQ(file(700), "@font-face 2 (F)");
+    EXPECT_EQ(file(400, FontStyle::Italic), "@font-face 3 (F)");
+    EXPECT_EQ(file(400, FontStyle::Oblique), "@font-face 3 (F)"); // oblique takes italic
+    EXPECT_EQ(file(700, FontStyle::Italic), "@font-face 3 (F)");  // style before weight
+    EXPECT_EQ(file(600), "@font-face 2 (F)");                     // above 500: heavier first
+    EXPECT_EQ(file(900), "@font-face 2 (F)");                     // then lighter
+    EXPECT_EQ(file(450), "@font-face 1 (F)"); // 400-500: up to 500, then lighter
+    EXPECT_EQ(file(300), "@font-face 4 (F)"); // below 400: lighter first
+    EXPECT_EQ(file(100), "@font-face 4 (F)"); // then heavier, nearest
+    EXPECT_NE(name(700), name(400));
+}
+
+TEST(FontDatabaseLayer, OnlyALayerTakesFontsAndOnlyFontsAreTaken) {
+    std::string error;
+    auto db = FontDatabase::empty();
+    EXPECT_FALSE(db->add_font_data({"X"}, bytes_of(kDejaVuSans), error));
+    EXPECT_FALSE(error.empty());
+    auto layer = FontDatabase::layer(*db);
+    error.clear();
+    EXPECT_FALSE(layer->add_font_data(
+        {"X"}, std::make_shared<const std::vector<unsigned char>>(100, 0x41), error));
+    EXPECT_NE(error.find("not a font"), std::string::npos) << error;
+    EXPECT_FALSE(layer->add_font_dir(kDejaVuDir));
 }
 
 } // namespace

@@ -366,6 +366,8 @@ class Parser {
             if (t.type == Tok::AtKeyword && ascii_iequals(t.value, "media") &&
                 depth < kMaxMediaDepth) {
                 if (!media(t, data, depth)) return false;
+            } else if (t.type == Tok::AtKeyword && ascii_iequals(t.value, "font-face")) {
+                font_face(t, data);
             } else if (t.type == Tok::AtKeyword) {
                 at_rule(t, false);
             } else if (!rule(std::move(t), data)) {
@@ -447,6 +449,22 @@ class Parser {
                     true);
         skip_block();
         return true;
+    }
+
+    // An @font-face rule: its block's declarations, kept as they are (what
+    // they mean is the reader's, svg/font_face.h). A prelude is an error.
+    void font_face(const Token& at, css_detail::SheetData& data) {
+        Token t = tokens_.next();
+        while (t.type == Tok::Whitespace) t = tokens_.next();
+        if (t.type != Tok::LBrace) {
+            problem(at.line, "@font-face without a { block right after it; ignored");
+            if (t.type == Tok::Semicolon) return;
+            if (t.type != Tok::Eof) skip_at_rule(false);
+            return;
+        }
+        CssFontFace rule{at.line, {}};
+        declarations(rule.descriptors, true, true);
+        data.font_faces.push_back(std::move(rule));
     }
 
     void at_rule(const Token& t, bool nested) {
@@ -704,5 +722,6 @@ void StyleSheet::parse(std::string_view css, std::vector<CssProblem>& problems,
 
 bool StyleSheet::empty() const { return data_->entries.empty(); }
 std::size_t StyleSheet::size() const { return data_->entries.size(); }
+const std::vector<CssFontFace>& StyleSheet::font_faces() const { return data_->font_faces; }
 
 } // namespace casteljau

@@ -105,6 +105,12 @@ struct CssProblem {
     bool unsupported = false;
 };
 
+/// An \@font-face rule (CSS Fonts 4, 4.1): its descriptors, read as declarations.
+struct CssFontFace {
+    int line = 0; ///< 1-based line of the at-keyword within its sheet text
+    std::vector<CssDeclaration> descriptors;
+};
+
 /// Parses the declarations of a style attribute (CSS Style Attributes, 3:
 /// a declaration list without braces), with the same tokenizer and error
 /// recovery as a sheet's blocks. Problems are appended to `problems`.
@@ -159,6 +165,9 @@ class StyleSheet {
     bool empty() const;
     /// The number of complex selectors kept (`a, b {}` keeps two).
     std::size_t size() const;
+    /// The \@font-face rules of the sheets parsed so far, in source order
+    /// (those inside a matching \@media block included).
+    const std::vector<CssFontFace>& font_faces() const;
 
   private:
     friend class CssMatcher;

@@ -7,6 +7,7 @@
 namespace casteljau {
 
 using svg_detail::iequals;
+using svg_detail::in_css_string;
 using svg_detail::trim;
 
 namespace {
@@ -16,29 +17,12 @@ bool ident_char(char c) {
            static_cast<unsigned char>(c) >= 0x80;
 }
 
-// Whether v[i] belongs to a string (opens it, is in it, or closes it),
-// `quote` being the open string's quote or 0; an escape steps i past the
-// escaped character.
-bool in_string(std::string_view v, std::size_t& i, char& quote) {
-    const char c = v[i];
-    if (quote) {
-        if (c == '\\')
-            ++i;
-        else if (c == quote)
-            quote = 0;
-        return true;
-    }
-    if (c != '"' && c != '\'') return false;
-    quote = c;
-    return true;
-}
-
 // Where the next var( starts at or after `from` (not inside a longer
 // identifier such as `myvar(`, nor in a string), or npos.
 std::size_t find_var(std::string_view v, std::size_t from) {
     char quote = 0;
     for (std::size_t i = from; i < v.size(); ++i)
-        if (!in_string(v, i, quote) && i + 4 <= v.size() && iequals(v.substr(i, 4), "var(") &&
+        if (!in_css_string(v, i, quote) && i + 4 <= v.size() && iequals(v.substr(i, 4), "var(") &&
             (i == 0 || !ident_char(v[i - 1])))
             return i;
     return std::string_view::npos;
@@ -50,7 +34,7 @@ std::size_t closing(std::string_view v, std::size_t from) {
     int depth = 1;
     char quote = 0;
     for (std::size_t i = from; i < v.size(); ++i) {
-        if (in_string(v, i, quote)) continue;
+        if (in_css_string(v, i, quote)) continue;
         if (v[i] == '(') ++depth;
         if (v[i] == ')' && --depth == 0) return i;
     }

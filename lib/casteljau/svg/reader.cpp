@@ -360,6 +360,7 @@ void Reader::read_style_sheets(const pugi::xml_node& root) {
                          " bytes, over the limit of " +
                          std::to_string(options_.max_attribute_bytes) + " bytes");
         std::vector<CssProblem> problems;
+        const std::size_t font_faces = sheet_.font_faces().size();
         sheet_.parse(css, problems, MediaContext{options_.dark});
         for (const CssProblem& p : problems) {
             // The problem's line within the sheet, from the <style> element's.
@@ -369,6 +370,7 @@ void Reader::read_style_sheets(const pugi::xml_node& root) {
             if (options_.strict && !p.unsupported) throw Failure{d.text()};
             warnings_.push_back(std::move(d));
         }
+        load_font_faces(st, font_faces);
     }
     if (!sheet_.empty()) matcher_ = std::make_unique<CssMatcher>(sheet_, css_tree_);
 }

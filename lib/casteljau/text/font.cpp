@@ -136,27 +136,77 @@ Path path_of(FT_Outline& outline) {
     return closed;
 }
 
+// Starts FreeType and opens the face with `open`; the reason it failed, or null.
+template <class Open>
+const char* open_face(Font::Impl& impl, Open open) {
+    if (FT_Init_FreeType(&impl.library) != 0) return "FreeType does not start";
+    if (open() != 0) return "not a font FreeType reads";
+    if (!FT_IS_SCALABLE(impl.face)) return "a bitmap font, without outlines";
+    return nullptr;
+}
+
 } // namespace
 
 std::shared_ptr<Font> Font::load(const std::string& file, int index,
                                  const std::vector<FontVariation>& variations, std::string* error) {
-    const auto failed = [&](const char* what) -> std::shared_ptr<Font> {
-        if (error) *error = file + ": " + what;
-        return nullptr;
-    };
     std::shared_ptr<Font> font(new Font);
     font->impl_ = std::make_unique<Impl>();
     Impl& impl = *font->impl_;
-    if (FT_Init_FreeType(&impl.library) != 0) return failed("FreeType does not start");
-    if (FT_New_Face(impl.library, file.c_str(), index, &impl.face) != 0)
-        return failed("not a font FreeType reads");
-    if (!FT_IS_SCALABLE(impl.face)) return failed("a bitmap font, without outlines");
-    set_variations(impl.face, variations);
+    if (const char* what = open_face(
+            impl, [&] { return FT_New_Face(impl.library, file.c_str(), index, &impl.face); })) {
+        if (error) *error = file + ": " + what;
+        return nullptr;
+    }
     hb_blob_t* blob = hb_blob_create_from_file(file.c_str());
-    hb_face_t* hb_face = hb_face_create(blob, unsigned(index));
-    impl.hb = hb_font_create(hb_face);
-    hb_face_destroy(hb_face);
+    hb_face_t* tables = hb_face_create(blob, unsigned(index));
     hb_blob_destroy(blob);
+    return finish(std::move(font), variations, tables);
+}
+
+std::shared_ptr<Font> Font::load(std::shared_ptr<const std::vector<unsigned char>> data,
+                                 const std::string& name, int index,
+                                 const std::vector<FontVariation>& variations, std::string* error) {
+    std::shared_ptr<Font> font(new Font);
+    font->impl_ = std::make_unique<Impl>();
+    Impl& impl = *font->impl_;
+    impl.data = std::move(data);
+    if (const char* what = open_face(impl, [&] {
+            return FT_New_Memory_Face(impl.library, impl.data->data(), FT_Long(impl.data->size()),
+                                      index, &impl.face);
+        })) {
+        if (error) *error = name + ": " + what;
+        return nullptr;
+    }
+    // HarfBuzz reads sfnt tables, and a WOFF or WOFF2 font is compressed:
+    // the tables are taken from FreeType, which decompressed them, each
+    // copied once now (HarfBuzz would otherwise ask FreeType for them
+    // lazily, from the shaping thread, while another reads outlines).
+    hb_face_t* tables = hb_face_builder_create();
+    FT_ULong tag = 0, length = 0;
+    for (FT_UInt i = 0; FT_Sfnt_Table_Info(impl.face, i, &tag, &length) == 0; ++i) {
+        std::vector<FT_Byte> bytes(length);
+        if (length == 0 || FT_Load_Sfnt_Table(impl.face, tag, 0, bytes.data(), &length) != 0)
+            continue;
+        hb_blob_t* blob =
+            hb_blob_create(reinterpret_cast<const char*>(bytes.data()), unsigned(length),
+                           HB_MEMORY_MODE_DUPLICATE, nullptr, nullptr);
+        hb_face_builder_add_table(tables, hb_tag_t(tag), blob);
+        hb_blob_destroy(blob);
+    }
+    hb_blob_t* built = hb_face_reference_blob(tables);
+    hb_face_destroy(tables);
+    tables = hb_face_create(built, 0);
+    hb_blob_destroy(built);
+    return finish(std::move(font), variations, tables);
+}
+
+std::shared_ptr<Font> Font::finish(std::shared_ptr<Font> font,
+                                   const std::vector<FontVariation>& variations,
+                                   hb_face_t* tables) {
+    Impl& impl = *font->impl_;
+    set_variations(impl.face, variations);
+    impl.hb = hb_font_create(tables);
+    hb_face_destroy(tables);
     hb_ot_font_set_funcs(impl.hb);
     // Shaping in font units: HarfBuzz's positions are then exact, unhinted.
     hb_font_set_scale(impl.hb, int(impl.face->units_per_EM), int(impl.face->units_per_EM));

@@ -22,6 +22,8 @@
 #include <unordered_map>
 #include <vector>
 
+struct hb_face_t; // HarfBuzz's face (hb.h), for Font's loader
+
 namespace casteljau {
 
 struct FontFace;
@@ -48,6 +50,13 @@ class Font {
     /// Loads face `index` of `file`; null, with `error` set, when it does not
     /// parse as a font or is over the limits below.
     static std::shared_ptr<Font> load(const std::string& file, int index,
+                                      const std::vector<FontVariation>& variations,
+                                      std::string* error = nullptr);
+    /// Loads face `index` of a font held in memory (TrueType, OpenType, a
+    /// collection, WOFF or WOFF2: what FreeType reads), kept alive by the
+    /// font; `name` stands for the file in `error`.
+    static std::shared_ptr<Font> load(std::shared_ptr<const std::vector<unsigned char>> data,
+                                      const std::string& name, int index,
                                       const std::vector<FontVariation>& variations,
                                       std::string* error = nullptr);
     ~Font();
@@ -87,6 +96,11 @@ class Font {
 
   private:
     Font() = default;
+    // Loads the face FreeType opened into impl_ (from a file or memory);
+    // `tables` gives HarfBuzz the face's tables.
+    static std::shared_ptr<Font> finish(std::shared_ptr<Font> font,
+                                        const std::vector<FontVariation>& variations,
+                                        hb_face_t* tables);
     std::unique_ptr<Impl> impl_;
     FontMetrics metrics_;
     std::string family_;

@@ -16,6 +16,8 @@
 // part of fontconfig, and a document asks the same few queries again and again.
 #include "casteljau/text/font_database.h"
 
+#include "casteljau/text/detail/document_fonts.h"
+
 #include <cctype>
 #include <filesystem>
 #include <fontconfig/fontconfig.h>
@@ -72,19 +74,10 @@ bool generic(const std::string& family) {
     return false;
 }
 
-bool same_name(std::string_view a, std::string_view b) {
-    if (a.size() != b.size()) return false;
-    for (std::size_t i = 0; i < a.size(); ++i)
-        if (std::tolower(static_cast<unsigned char>(a[i])) !=
-            std::tolower(static_cast<unsigned char>(b[i])))
-            return false;
-    return true;
-}
-
 bool has_family(FcPattern* p, const std::string& family) {
     FcChar8* name = nullptr;
     for (int i = 0; FcPatternGetString(p, FC_FAMILY, i, &name) == FcResultMatch; ++i)
-        if (same_name(reinterpret_cast<const char*>(name), family)) return true;
+        if (same_family_name(reinterpret_cast<const char*>(name), family)) return true;
     return false;
 }
 
@@ -98,7 +91,7 @@ std::optional<FontFace> face_of(FcPattern* p) {
     int index = 0;
     if (FcPatternGetString(p, FC_FILE, 0, &file) != FcResultMatch) return std::nullopt;
     FcPatternGetInteger(p, FC_INDEX, 0, &index);
-    return FontFace{reinterpret_cast<const char*>(file), index};
+    return FontFace{reinterpret_cast<const char*>(file), index, nullptr};
 }
 
 // The pattern of one family of a query, with fontconfig's substitutions.
@@ -123,6 +116,15 @@ FcPattern* pattern_of(FcConfig* config, const std::string& family, const FontQue
 }
 
 } // namespace
+
+bool same_family_name(std::string_view a, std::string_view b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (std::tolower(static_cast<unsigned char>(a[i])) !=
+            std::tolower(static_cast<unsigned char>(b[i])))
+            return false;
+    return true;
+}
 
 FcPattern* FontDatabase::Impl::best_of(const std::string& family, const FontQuery& q) {
     const FamilyKey key{family, q.weight, int(q.style), q.stretch};
@@ -207,6 +209,33 @@ std::unique_ptr<FontDatabase> FontDatabase::empty() {
     return std::unique_ptr<FontDatabase>(new FontDatabase(false));
 }
 
+FontDatabase::FontDatabase(FontDatabase* parent)
+    : impl_(std::make_unique<Impl>()), layer_(std::make_unique<Layer>()), parent_(parent) {}
+
+std::unique_ptr<FontDatabase> FontDatabase::layer(FontDatabase& parent) {
+    return std::unique_ptr<FontDatabase>(new FontDatabase(&parent));
+}
+
+bool FontDatabase::add_font_data(const FontFaceDescriptors& d,
+                                 std::shared_ptr<const std::vector<unsigned char>> data,
+                                 std::string& error) {
+    if (!layer_) {
+        error = "fonts in memory go to a document layer (FontDatabase::layer)";
+        return false;
+    }
+    std::lock_guard lock(mutex_);
+    // A name unique in the layer: the key of its loaded fonts.
+    FontFace face{"@font-face " + std::to_string(layer_->entries.size() + 1) + " (" + d.family +
+                      ")",
+                  0, std::move(data)};
+    std::shared_ptr<const Font> font = Font::load(face.data, face.file, 0, {}, &error);
+    if (!font) return false;
+    impl_->fonts[{{face.file, face.index}, {}}] = font;
+    layer_->entries.push_back({d, std::move(face), std::move(font)});
+    impl_->forget();
+    return true;
+}
+
 FontDatabase::~FontDatabase() = default;
 
 FontDatabase& FontDatabase::system() {
@@ -215,6 +244,7 @@ FontDatabase& FontDatabase::system() {
 }
 
 bool FontDatabase::add_font_dir(const std::string& dir) {
+    if (!impl_->config) return false; // a layer has no folders
     std::error_code e;
     if (!std::filesystem::is_directory(dir, e)) return false; // fontconfig would say yes
     std::lock_guard lock(mutex_);
@@ -223,6 +253,7 @@ bool FontDatabase::add_font_dir(const std::string& dir) {
 }
 
 bool FontDatabase::add_font_file(const std::string& file) {
+    if (!impl_->config) return false;
     std::lock_guard lock(mutex_);
     impl_->forget();
     return FcConfigAppFontAddFile(impl_->config, reinterpret_cast<const FcChar8*>(file.c_str()));
@@ -240,11 +271,30 @@ std::optional<FontFace> FontDatabase::fallback(const FontQuery& q, char32_t c) {
     return find(q, c);
 }
 
+std::optional<FontFace> FontDatabase::find_family(const std::string& family, const FontQuery& q,
+                                                  std::optional<char32_t> c) {
+    std::lock_guard lock(mutex_);
+    if (parent_) {
+        if (const Layer::Entry* e = layer_->best(family, q, c)) return e->face;
+        return parent_->find_family(family, q, c);
+    }
+    return impl_->match_family(family, q, c);
+}
+
 std::optional<FontFace> FontDatabase::find(const FontQuery& q, std::optional<char32_t> c) {
     std::lock_guard lock(mutex_);
     const Impl::Key key{q.families, q.weight, int(q.style), q.stretch, c ? *c + 1 : 0};
     if (const auto it = impl_->matches.find(key); it != impl_->matches.end()) return it->second;
     std::optional<FontFace> face;
+    if (parent_) { // a layer: its families, or the parent's, in the query's order
+        for (const std::string& family : q.families) {
+            if (const Layer::Entry* e = layer_->best(family, q, c)) face = e->face;
+            if (face || (face = parent_->find_family(family, q, c))) break;
+        }
+        if (!face) face = parent_->find(q, c);
+        impl_->matches.emplace(key, face);
+        return face;
+    }
     for (const std::string& family : q.families)
         if ((face = impl_->match_family(family, q, c))) break;
     for (const std::string& family : q.families) {
@@ -260,11 +310,14 @@ std::optional<FontFace> FontDatabase::find(const FontQuery& q, std::optional<cha
 
 std::shared_ptr<const Font> FontDatabase::font(const FontFace& face,
                                                const std::vector<FontVariation>& variations) {
+    if (parent_ && !face.data) return parent_->font(face, variations);
     std::lock_guard lock(mutex_);
     std::vector<std::tuple<std::string, double>> axes;
     for (const FontVariation& v : variations) axes.emplace_back(std::string(v.tag, 4), v.value);
     auto& slot = impl_->fonts[{{face.file, face.index}, axes}];
-    if (!slot) slot = Font::load(face.file, face.index, variations);
+    if (!slot)
+        slot = face.data ? Font::load(face.data, face.file, face.index, variations)
+                         : Font::load(face.file, face.index, variations);
     return slot;
 }
 

@@ -22,6 +22,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace casteljau {
@@ -36,11 +37,24 @@ struct FontQuery {
     int stretch = 100; ///< percent of normal width, 50 to 200
 };
 
+/// Whether two family names are the same: equal but for ASCII case (CSS
+/// Fonts 4, 5.1).
+bool same_family_name(std::string_view a, std::string_view b);
+
 /// A font file and the face in it: what a Font is loaded from.
 struct FontFace {
-    std::string file;
+    std::string file; ///< the file; for a font in memory, its name in messages
     int index = 0;
-    bool operator==(const FontFace&) const = default; ///< same file and face
+    /// A font in memory (a document's \@font-face): its bytes; null for a file.
+    std::shared_ptr<const std::vector<unsigned char>> data;
+    bool operator==(const FontFace&) const = default; ///< same file (or bytes) and face
+};
+
+/// What a document's font (CSS \@font-face) is for: its family, weights and style.
+struct FontFaceDescriptors {
+    std::string family;
+    int weight_min = 400, weight_max = 400; ///< font-weight, a range (CSS Fonts 4, 4.2)
+    FontStyle style = FontStyle::Normal;
 };
 
 /// Finds fonts and keeps them loaded.
@@ -51,6 +65,13 @@ class FontDatabase {
     FontDatabase();
     /// No fonts at all: an application adds its own.
     static std::unique_ptr<FontDatabase> empty();
+    /// A document's fonts over `parent`'s (which must outlive it): the faces
+    /// add_font_data gives are matched first, family by family in a query's
+    /// order (CSS Fonts 4, 4.1: \@font-face families hide system ones of the
+    /// same name); every other family, and fallback by character, is the
+    /// parent's. A document layer keeps nothing in the parent, so documents
+    /// read side by side never see each other's fonts.
+    static std::unique_ptr<FontDatabase> layer(FontDatabase& parent);
     ~FontDatabase();
     FontDatabase(const FontDatabase&) = delete;
     FontDatabase& operator=(const FontDatabase&) = delete;
@@ -59,6 +80,11 @@ class FontDatabase {
     bool add_font_dir(const std::string& dir);
     /// Adds one font file; false when fontconfig cannot read it.
     bool add_font_file(const std::string& file);
+    /// Adds a font held in memory (TrueType, OpenType, WOFF or WOFF2) for
+    /// the family and style of `d`; on a layer only. False, with `error`
+    /// set, when it does not load as a font.
+    bool add_font_data(const FontFaceDescriptors& d,
+                       std::shared_ptr<const std::vector<unsigned char>> data, std::string& error);
     /// The family used when none of a query's families is found and
     /// fontconfig classes none of them in a generic family ("sans-serif"
     /// unless set: what fontconfig itself falls back to, as librsvg and
@@ -83,9 +109,16 @@ class FontDatabase {
 
   private:
     explicit FontDatabase(bool system_config);
+    explicit FontDatabase(FontDatabase* parent); // a layer
     std::optional<FontFace> find(const FontQuery& q, std::optional<char32_t> c);
+    // The best face of `family` itself (or of a generic family), when one has c.
+    std::optional<FontFace> find_family(const std::string& family, const FontQuery& q,
+                                        std::optional<char32_t> c);
     struct Impl;
+    struct Layer; // a layer's own faces (text/font_face_layer.cpp)
     std::unique_ptr<Impl> impl_;
+    std::unique_ptr<Layer> layer_;
+    FontDatabase* parent_ = nullptr; // a layer's
     std::string default_family_ = "sans-serif";
     std::mutex mutex_;
 };

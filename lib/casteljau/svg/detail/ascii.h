@@ -10,6 +10,23 @@
 
 namespace casteljau::svg_detail {
 
+/// Whether v[i] belongs to a string (opens it, is in it, or closes it),
+/// `quote` being the open string's quote or 0; an escape steps i past the
+/// escaped character.
+inline bool in_css_string(std::string_view v, std::size_t& i, char& quote) {
+    const char c = v[i];
+    if (quote) {
+        if (c == '\\')
+            ++i;
+        else if (c == quote)
+            quote = 0;
+        return true;
+    }
+    if (c != '"' && c != '\'') return false;
+    quote = c;
+    return true;
+}
+
 /// `s` without leading and trailing whitespace.
 inline std::string_view trim(std::string_view s) {
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);

@@ -162,6 +162,7 @@ struct SheetData {
     // rightmost compound; the rest in `universal`. Each list in source order.
     Buckets by_id, by_class, by_type;
     std::vector<std::uint32_t> universal;
+    std::vector<CssFontFace> font_faces;
     bool full = false; // kCssMaxSelectors reached: later rules are dropped
 
     // Files `selectors` under rule `rule`.

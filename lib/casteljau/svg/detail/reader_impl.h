@@ -9,6 +9,7 @@
 #include "casteljau/svg/detail/css_pugi.h"
 #include "casteljau/svg/detail/gradients.h"
 #include "casteljau/svg/detail/href.h"
+#include "casteljau/svg/font_face.h"
 #include "casteljau/svg/marker_vertices.h"
 #include "casteljau/svg/reader.h"
 #include "casteljau/svg/shapes.h"
@@ -263,8 +264,15 @@ class Reader {
                   const ElementProps& props, const Path* box = nullptr);
     // <text> (svg/text.cpp): reading its content, then drawing its layout.
     FontDatabase& fonts() const {
+        if (document_fonts_) return *document_fonts_;
         return options_.fonts ? *options_.fonts : FontDatabase::system();
     }
+    // @font-face (svg/font_face.cpp).
+    void load_font_faces(const pugi::xml_node& st, std::size_t first);
+    std::optional<std::vector<unsigned char>> font_source_bytes(const FontFaceSource& s,
+                                                                std::string& error);
+    std::unique_ptr<FontDatabase> document_fonts_; // the @font-face fonts, over the others
+    int font_faces_ = 0;                           // fonts parsed for @font-face
     void text(const pugi::xml_node& n, const StyleState& style, const ElementProps& props,
               const Affine& m, Group& out, int depth);
     void text_characters(const pugi::xml_node& at, std::string_view utf8, std::uint32_t span,

@@ -7,6 +7,8 @@
 #include "casteljau/text/font.h"
 
 #include <ft2build.h>
+#include <memory>
+#include <vector>
 #include FT_FREETYPE_H
 #include <hb.h>
 
@@ -16,6 +18,9 @@ struct Font::Impl {
     FT_Library library = nullptr; // one per font: FreeType libraries are not thread-safe
     FT_Face face = nullptr;
     hb_font_t* hb = nullptr;
+    /// A face loaded from memory: its bytes, which FreeType reads for the
+    /// face's life.
+    std::shared_ptr<const std::vector<unsigned char>> data;
     ~Impl();
 };
 
