@@ -2,8 +2,8 @@
 
 #include "casteljau/flatten/flatten.h"
 #include "casteljau/geom/fixed_stack.h"
-#include "casteljau/geom/line_clip.h"
 #include "casteljau/stroke/detail/inner_join.h"
+#include "casteljau/stroke/detail/pieces.h"
 
 #include <algorithm>
 #include <array>
@@ -21,8 +21,10 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
+using stroke_detail::Growth;
 using stroke_detail::kMeetEdges;
 using stroke_detail::Neighbours;
+using stroke_detail::Pieces;
 using stroke_detail::Sample;
 
 // All control points coincide: the segment is a point.
@@ -56,45 +58,6 @@ constexpr double kMaxArcSteps = 1 << 12;
 // stay within the 1 GiB promised for hostile input, at twice the 3.6M of the
 // million-segment zigzag of tests/bad_input, all in one strip.
 constexpr std::size_t kMaxOutlinePoints = std::size_t(1) << 23;
-
-// The working memory the buffers are counted at (stroker.h,
-// set_memory_budget): 80 bytes per element of the largest (a point on its way
-// to coverage: itself, its edge and its sorted edge, with vectors' slack; a
-// dash piece is a segment of up to 72 bytes; a sample 40).
-constexpr std::size_t kElementBytes = 80;
-// Elements below which nothing is reserved (1.3 MB): the tiger's largest
-// stroke holds about 2,000 points, so ordinary strokes cost no atomic.
-constexpr std::size_t kUnreserved = std::size_t(1) << 14;
-
-// The buffers' reservation from the memory budget, grown as they grow and
-// kept while they are; when the budget refuses, the call is `through` the
-// gate instead (the budget's reserve entered it), and grows on unreserved.
-struct Growth {
-    bool (*reserve)(std::size_t) = nullptr;
-    void (*unreserve)(std::size_t) = nullptr;
-    std::size_t reserved = 0; // bytes
-    bool through = false;     // this call's
-    // A buffer holds n elements.
-    void reached(std::size_t n) {
-        if (n < kUnreserved || through || !reserve || n * kElementBytes <= reserved) return;
-        // Twice as much as held, so that a growing buffer reserves a few times.
-        const std::size_t more = std::max(n * kElementBytes, 2 * reserved) - reserved;
-        if (reserve(more))
-            reserved += more;
-        else
-            through = true;
-    }
-    void give_back() {
-        if (unreserve && reserved) unreserve(reserved);
-        reserved = 0;
-    }
-    // Whether a buffer of n elements may take one more within `limit`.
-    bool may_grow(std::size_t n, std::size_t limit) {
-        if (n >= limit) return false;
-        reached(n);
-        return true;
-    }
-};
 
 // (b): the normal may turn by dphi between samples; at least 4 samples per
 // quarter turn keep round joins and tiny widths sensible too. dphi =
@@ -293,68 +256,6 @@ class Sampler {
     Growth& growth_;
 };
 
-// The subpaths to outline (the visible part of a path, or its dashes), with
-// the Path building calls they are made by, in flat buffers that keep their
-// capacity from stroke to stroke.
-struct Pieces {
-    struct Run {
-        Point start;
-        std::size_t begin, end; // segments[begin, end)
-        bool closed;
-    };
-    std::vector<Segment> segments;
-    std::vector<Run> runs;
-    bool open = false;
-
-    void clear() { segments.clear(), runs.clear(), open = false; }
-    void move_to(Point p) {
-        runs.push_back({p, segments.size(), segments.size(), false});
-        open = true;
-    }
-    void append(const Segment& s) {
-        if (!open) move_to(segment_start(s));
-        segments.push_back(s);
-        runs.back().end = segments.size();
-    }
-    // As Path::close: the closing line where the subpath ends elsewhere.
-    void close() {
-        if (!open) return;
-        open = false;
-        Run& r = runs.back();
-        if (r.begin == r.end) return;
-        if (const Point end = segment_end(segments.back()); end != r.start)
-            append(Line{{end, r.start}});
-        r.closed = true;
-    }
-    void add(const Subpath& sp) {
-        move_to(sp.start);
-        for (const Segment& s : sp.segments) append(s);
-        if (sp.closed) close();
-        open = false;
-    }
-    // The runs [first, end) are the parts of one closed subpath (cut by the
-    // visible box, or its dashes), the first starting at its start and the
-    // last ending there: through that point they are one stroke, with the
-    // closing join and no caps. So the last run is moved in front of the
-    // first (or, when they are one run, the whole subpath, closed).
-    void rejoin(std::size_t first) {
-        Run& f = runs[first];
-        if (first + 1 == runs.size()) return void(f.closed = true);
-        const Run last = runs.back();
-        runs.pop_back();
-        const auto at = [&](std::size_t i) { return segments.begin() + std::ptrdiff_t(i); };
-        std::rotate(at(f.begin), at(last.begin), at(last.end));
-        const std::size_t moved = last.end - last.begin;
-        for (std::size_t r = first + 1; r < runs.size(); ++r)
-            runs[r].begin += moved, runs[r].end += moved;
-        f.start = last.start;
-        f.end += moved;
-    }
-    std::span<const Segment> segments_of(const Run& r) const {
-        return std::span<const Segment>(segments).subspan(r.begin, r.end - r.begin);
-    }
-};
-
 } // namespace
 
 // Everything a stroke is built in, kept between strokes: once the buffers
@@ -367,8 +268,7 @@ struct Stroker::Buffers {
     std::vector<Sample> samples, before; // a segment's, the one before it's
     std::vector<Sample> head;            // the first ones of a closed subpath's first segment
     std::vector<Point> right;
-    std::vector<FlatVertex> dash_vertices;
-    std::vector<double> dash_pattern;
+    stroke_detail::DashBuffers dash;
     std::vector<Polygon> polygons; // [0, count) are the last outline's
     std::size_t count = 0;
 
@@ -555,206 +455,6 @@ class Outline {
     Sampler sampler_; // one per stroke: its buffers serve every segment
 };
 
-// Dash boundaries walked per path (stroker.h): beyond, dashes are not drawn.
-constexpr std::size_t kMaxDashes = 1 << 20;
-
-// A position in the dash pattern: entry k (even: a dash, odd: a gap) with
-// `remaining` of its length left.
-struct DashCursor {
-    const std::vector<double>& pattern; // even length, positive sum
-    double period;
-    std::size_t k = 0;
-    double remaining;
-
-    // Where a subpath starts: the offset, wrapped into [0, period) (negative too).
-    DashCursor(const std::vector<double>& p, double per, double offset)
-        : pattern(p), period(per), remaining(p[0]) {
-        double phase = std::fmod(offset, period);
-        if (phase < 0) phase += period;
-        consume(phase);
-    }
-    bool in_dash() const { return k % 2 == 0; }
-    void next() {
-        k = (k + 1) % pattern.size();
-        remaining = pattern[k];
-    }
-    // Moves `len` along, whole periods at once: O(pattern length) for any
-    // length. An infinite one (a chord between points 1e308 apart, whose
-    // length overflows) leaves the phase as it is rather than make it NaN.
-    void skip(double len) {
-        if (!std::isfinite(len)) return;
-        if (len < remaining) return void(remaining -= len);
-        len -= remaining;
-        next();
-        consume(std::fmod(len, period));
-    }
-
-  private:
-    void consume(double len) { // len < period: ends within one turn of the pattern
-        while (len >= remaining) len -= remaining, next();
-        remaining -= len;
-    }
-};
-
-// Splits the path into dashes (open subpaths) along its arc length, into
-// `out`; dashes that lie outside `keep` are not emitted.
-void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& keep,
-            Stroker::Buffers& b) {
-    std::vector<double>& pattern = b.dash_pattern;
-    pattern.assign(st.dashes.begin(), st.dashes.end());
-    if (pattern.size() % 2) pattern.insert(pattern.end(), st.dashes.begin(), st.dashes.end());
-    double period = 0;
-    for (double d : pattern) period += d;
-    Pieces& out = b.pieces;
-    if (!(period > 0)) { // all zero: solid (SVG 1.1, 11.4)
-        for (const Subpath& sp : path.subpaths()) out.add(sp);
-        return;
-    }
-    std::size_t walked = 0;
-    std::vector<FlatVertex>& v = b.dash_vertices;
-    for (const Subpath& sp : path.subpaths()) {
-        DashCursor dash(pattern, period, st.dash_offset);
-        bool open = false; // the last emitted dash continues into this piece
-        const std::size_t first = out.runs.size();
-        bool from_start = false; // the first dash starts at the subpath's start
-        const auto emit = [&](const Segment& seg, double ta, double tb) {
-            const Segment piece = segment_subsegment(seg, ta, tb);
-            if (!segment_control_bounds(piece).intersects(keep)) return void(open = false);
-            if (!open && out.runs.size() == first)
-                from_start = ta == 0 && &seg == &sp.segments.front();
-            if (!open) out.move_to(segment_start(piece));
-            out.append(piece);
-            b.growth.reached(out.segments.size());
-            open = true;
-        };
-        for (const Segment& seg : sp.segments) {
-            v.assign(1, {segment_start(seg), 0.0});
-            std::visit(
-                [&](const auto& c) {
-                    flatten_curve(c, FlattenOptions{tol * 1e-3, FlattenMethod::Adaptive, 0},
-                                  [&](const FlatVertex& x) {
-                                      b.growth.reached(v.size());
-                                      v.push_back(x);
-                                  });
-                },
-                seg);
-            double t_from = 0;
-            // Passes `len` out of reach: the dash in progress ends at t_end,
-            // and the next one can only start after it (at t_after).
-            const auto pass = [&](double t_end, double len, double t_after) {
-                if (dash.in_dash() && t_from < t_end) emit(seg, t_from, t_end);
-                open = false;
-                dash.skip(len);
-                t_from = t_after;
-            };
-            for (std::size_t i = 1; i < v.size() && walked < kMaxDashes; ++i) {
-                const Point a = v[i - 1].p, b = v[i].p;
-                const double len = distance(a, b);
-                const auto t_at = [&](double pos) {
-                    return pos >= len ? v[i].t : v[i - 1].t + (v[i].t - v[i - 1].t) * (pos / len);
-                };
-                // The stretch [s0, s1] of the chord within reach (clipped when
-                // it leaves the box: a chord of a curve reaching 1e308 is long;
-                // one whose length overflows is passed over whole).
-                if (!std::isfinite(len)) {
-                    pass(v[i - 1].t, len, v[i].t);
-                    continue;
-                }
-                // The walk measures from s0 along the stretch, whose length is
-                // taken between the clipped ends: on a chord 1e17 long s0 and
-                // s1 are multiples of 16 (their ulp), where s1 - s0 would be
-                // off by that much and s0 + 4 would not move (a walk that
-                // stood still emitted 2^19 dots at one point).
-                double s0 = 0, s1 = len, stretch = len;
-                if (!keep.contains(a) || !keep.contains(b)) {
-                    const auto part = clip_line(a, b, keep);
-                    s0 = part ? distance(a, part->front()) : len;
-                    s1 = part ? distance(a, part->back()) : len;
-                    stretch = part ? distance(part->front(), part->back()) : 0;
-                }
-                if (s0 > 0) pass(v[i - 1].t, s0, t_at(s0));
-                double walk = 0;
-                while (stretch - walk > dash.remaining && walked < kMaxDashes) {
-                    walk += dash.remaining; // the pattern changes in this chord
-                    const double t = t_at(s0 + walk);
-                    if (dash.in_dash()) emit(seg, t_from, t);
-                    open = false;
-                    t_from = t;
-                    dash.next();
-                    ++walked;
-                }
-                dash.remaining -= stretch - walk;
-                if (s1 < len) pass(t_at(s1), len - s1, v[i].t);
-            }
-            if (walked >= kMaxDashes) return; // the rest is not drawn
-            if (dash.in_dash() && t_from < 1) emit(seg, t_from, 1.0);
-        }
-        if (sp.closed && open && from_start) out.rejoin(first); // a dash through the start
-    }
-}
-
-// The parts of `path` within `keep`, as open or closed subpaths: a segment
-// whose control box misses `keep` is left out and its subpath is cut there
-// (the cut ends lie out of reach, so their caps cannot show); a line is
-// clipped to `keep`; a curve larger than 4 box sizes is halved until its
-// pieces are small or miss, and a piece still large at kCullDepth is taken
-// as its chord, clipped. So strokes of curves reaching 1e308 cost what their
-// visible part costs, and the outline never measures a length beyond it
-// (whose square would overflow). A closed subpath cut so keeps its closing
-// join: its part ending at its start goes on into the part starting there.
-// (It had caps there instead, where the renderer's strip of rows cut it
-// elsewhere; and a line wholly outside did not count as a cut, so the
-// parts were closed with a line across the drawing.)
-void visible_part(const Path& path, const Rect& keep, Pieces& out, Growth& growth) {
-    const double small = 4 * std::max(keep.width(), keep.height());
-    for (const Subpath& sp : path.subpaths()) {
-        bool open = false, cut = false; // cut: a part of it has been left out
-        const std::size_t first = out.runs.size();
-        bool from_start = false; // the first part starts at the subpath's start
-        const auto keep_piece = [&](const Segment& piece) {
-            if (!open && out.runs.size() == first) from_start = !cut;
-            if (!open) out.move_to(segment_start(piece));
-            out.append(piece);
-            growth.reached(out.segments.size());
-            open = true;
-        };
-        const auto keep_line = [&](Point a, Point b) {
-            const auto part = clip_line(a, b, keep);
-            if (!part) {
-                open = false, cut = true;
-                return;
-            }
-            if (part->front() != a) open = false, cut = true; // before from_start is taken
-            keep_piece(Line{{part->front(), part->back()}});
-            if (part->back() != b) open = false, cut = true;
-        };
-        for (const Segment& seg : sp.segments) {
-            std::visit(
-                [&](const auto& curve) {
-                    using Curve = std::decay_t<decltype(curve)>;
-                    if constexpr (std::is_same_v<Curve, Line>)
-                        return keep_line(curve.start(), curve.end());
-                    cull_walk(curve, [&](const Curve& c, int depth) {
-                        const Rect box = c.control_bounds();
-                        if (!box.intersects(keep)) {
-                            open = false, cut = true;
-                        } else if (box.width() <= small && box.height() <= small) {
-                            keep_piece(c);
-                        } else if (depth == kCullDepth) {
-                            keep_line(c.start(), c.end());
-                        } else {
-                            return true;
-                        }
-                        return false;
-                    });
-                },
-                seg);
-        }
-        if (sp.closed && open && from_start) out.rejoin(first);
-        out.open = false;
-    }
-}
-
 } // namespace
 
 Stroker::Stroker() : b_(std::make_unique<Buffers>()) {}
@@ -799,7 +499,7 @@ std::span<const Polygon> Stroker::outline(const Path& path, const StrokeGeometry
     if (style.dashes.empty())
         visible_part(path, keep, b.pieces, b.growth);
     else
-        dashed(path, style, tolerance, keep, b);
+        dashed(path, style, tolerance, keep, b.dash, b.pieces, b.growth);
     Outline outline(h, tolerance, style, b);
     std::size_t points = 0;
     for (const Pieces::Run& run : b.pieces.runs) {
