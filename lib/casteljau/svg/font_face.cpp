@@ -133,7 +133,7 @@ std::optional<FontFaceRule> parse_font_face(const std::vector<CssDeclaration>& d
             FontFaceDescriptors w = rule.descriptors;
             if (weight_range(d.value, w)) rule.descriptors = w;
         } else if (d.name == "font-style") {
-            const std::string_view s = d.value.substr(0, d.value.find(' '));
+            const std::string_view s = std::string_view(d.value).substr(0, d.value.find(' '));
             if (iequals(s, "italic"))
                 rule.descriptors.style = FontStyle::Italic;
             else if (iequals(s, "oblique"))
