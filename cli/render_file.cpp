@@ -84,7 +84,9 @@ template <class Pixel>
 void FileRenderer::render_into(const RenderJob& job, int threads, BasicCanvas<Pixel>& canvas,
                                CanvasBudget& budget, FileOutcome& out) {
     const auto t0 = Clock::now();
-    const std::optional<Scene> loaded = load_svg(job.input, a_.svg, out.status, out.log);
+    SvgOptions svg = a_.svg;
+    svg.media_size = {a_.width, a_.height, a_.scale}; // what @media width and height answer
+    const std::optional<Scene> loaded = load_svg(job.input, svg, out.status, out.log);
     if (!loaded) return;
     const Scene& scene = *loaded;
     const double parse_ms = ms(Clock::now() - t0);

@@ -56,6 +56,7 @@ Request make_request(std::optional<double> width, std::optional<double> height,
         value_error("scale " + py::str(py::float_(*scale)).cast<std::string>() +
                     ": must be in [1e-06, 1e+06]");
     r.size = {width.value_or(0), height.value_or(0), scale.value_or(0)};
+    r.svg.media_size = r.size; // what @media width and height are answered for
     r.background = to_background(background);
     r.options.flatten = flatten_options(tolerance, method, segments);
     r.options.antialias = antialias;

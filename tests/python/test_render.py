@@ -123,6 +123,23 @@ def test_color_scheme_answers_media_queries(cli, tmp_path):
     assert np.array_equal(decode_png(tmp_path / "lib.png"), dark) and stats["warnings"] == []
 
 
+RESPONSIVE = b'<svg xmlns="http://www.w3.org/2000/svg" width="4" height="4"><style>rect { fill: #000 }' \
+             b' @media (max-width: 16px) { rect { fill: #fff } }</style>' \
+             b'<rect width="4" height="4"/></svg>'
+
+
+def test_media_width_is_the_size_drawn_at(cli, tmp_path):
+    # Its own 4 px, then drawn 16 and 17 px wide: as the CLI's --width answers it.
+    assert casteljau.render_svg(RESPONSIVE)[0, 0].tolist() == [255] * 4
+    assert casteljau.render_svg(RESPONSIVE, width=16)[0, 0].tolist() == [255] * 4
+    wide = casteljau.render_svg(RESPONSIVE, scale=4.25)
+    assert wide.shape[:2] == (17, 17) and wide[0, 0].tolist() == [0, 0, 0, 255]
+    svg, out = tmp_path / "responsive.svg", tmp_path / "responsive.png"
+    svg.write_bytes(RESPONSIVE)
+    run_cli(cli, "render", svg, "-o", out, "--width", "17")
+    assert np.array_equal(wide, decode_png(out))
+
+
 def test_options_are_keyword_only():
     with pytest.raises(TypeError):
         casteljau.render_svg(SMALL, 100)

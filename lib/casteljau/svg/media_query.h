@@ -12,11 +12,15 @@
 // MediaContext says dark), prefers-reduced-motion, prefers-contrast,
 // prefers-reduced-transparency, forced-colors, inverted-colors (the
 // no-preference or none value), color (yes), monochrome (no: 0), grid (no),
-// scripting (none). Any other (width, height, aspect-ratio, resolution,
-// orientation, hover, ...) is unknown: the style sheets are read before the
-// document's size is, and a renderer has no pointer. An unknown feature
-// makes its whole query false, as Media Queries 4, 3.2 says of unknown
-// values, and is reported so that the caller can warn about it.
+// scripting (none); and, when MediaContext gives the size the picture is
+// drawn at (the viewport of an SVG image, in px), width, height,
+// aspect-ratio (and their device- forms, the same here) and orientation,
+// with min-/max- prefixes or in the range syntax of 4.1 (`(width >= 32px)`,
+// `(16px < width <= 64px)`). Lengths take px, em and rem (16 px: no font
+// size applies), in, cm, mm, Q, pt and pc. Any other feature (resolution,
+// hover, ...), or a size feature without a size, is unknown: an unknown
+// feature makes its whole query false, as Media Queries 4, 3.2 says of
+// unknown values, and is reported so that the caller can warn about it.
 #pragma once
 
 #include <string>
@@ -27,6 +31,8 @@ namespace casteljau {
 /// What the picture is rendered for.
 struct MediaContext {
     bool dark = false; ///< prefers-color-scheme: dark
+    double width = 0;  ///< the viewport's width, px; 0: unknown
+    double height = 0; ///< the viewport's height, px; 0: unknown
 };
 
 /// Whether the query list `query` (an @media rule's prelude) matches. A

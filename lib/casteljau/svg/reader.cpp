@@ -2,6 +2,7 @@
 
 #include "casteljau/curve/path_data.h"
 #include "casteljau/io/text_file.h"
+#include "casteljau/render/output_size.h"
 #include "casteljau/svg/conditional.h"
 #include "casteljau/svg/detail/ascii.h"
 #include "casteljau/svg/detail/css_pugi.h"
@@ -139,9 +140,29 @@ Scene Reader::read() {
 // viewBox (resvg's default). Then the viewBox mapping (SVG 1.1, 7.7 and
 // 7.8; the root's own transform goes before it, root_transform). Nothing to
 // draw (nullopt) when the viewBox is zero-sized.
-std::optional<Affine> Reader::viewport(const pugi::xml_node& root, Scene& scene,
-                                       const LengthContext& ctx) {
-    const std::optional<ViewBox> box = view_box(root);
+// What @media queries are answered for (svg/media_query.h): the color
+// scheme, and the viewport the picture is drawn at: the document's size
+// before any style sheet (font sizes of 16 px), mapped as
+// SvgOptions::media_size asks (render/output_size.h). No size when the
+// document's is unusable (the read fails on it later anyway).
+MediaContext Reader::media_context(const pugi::xml_node& root) {
+    MediaContext m{options_.dark};
+    const bool was_quiet = quiet_;
+    quiet_ = true;
+    const auto [w, h] = document_size(root, view_box(root), LengthContext{16, 16, 0, 0});
+    quiet_ = was_quiet;
+    if (!(w > 0) || !(h > 0) || w > options_.max_size || h > options_.max_size) return m;
+    const OutputSize size = output_size(w, h, options_.media_size);
+    if (!size.error.empty()) return m;
+    m.width = size.width, m.height = size.height;
+    return m;
+}
+
+// The root's size (see viewport below); problems with its attributes are
+// told (unless quiet), and not checked against the limits.
+std::pair<double, double> Reader::document_size(const pugi::xml_node& root,
+                                                const std::optional<ViewBox>& box,
+                                                const LengthContext& ctx) {
     struct Side {
         double length;
         bool absolute;
@@ -157,8 +178,14 @@ std::optional<Affine> Reader::viewport(const pugi::xml_node& root, Scene& scene,
     };
     const Side w = side("width", box ? box->w : 0), h = side("height", box ? box->h : 0);
     const bool ratio = box && box->w > 0 && box->h > 0 && w.absolute != h.absolute;
-    scene.width = ratio && h.absolute ? h.length * box->w / box->h : w.length;
-    scene.height = ratio && w.absolute ? w.length * box->h / box->w : h.length;
+    return {ratio && h.absolute ? h.length * box->w / box->h : w.length,
+            ratio && w.absolute ? w.length * box->h / box->w : h.length};
+}
+
+std::optional<Affine> Reader::viewport(const pugi::xml_node& root, Scene& scene,
+                                       const LengthContext& ctx) {
+    const std::optional<ViewBox> box = view_box(root);
+    std::tie(scene.width, scene.height) = document_size(root, box, ctx);
     for (const double d : {scene.width, scene.height}) {
         char size[32]; // "%g": 1e+308, not its 309 digits
         std::snprintf(size, sizeof size, "%g", d);
@@ -334,6 +361,18 @@ const std::vector<const CssDeclaration*>& Reader::matched(const pugi::xml_node& 
     return matched_;
 }
 
+namespace {
+
+// Whether a sheet's text has an @media rule (in any case), the only part of
+// it whose reading depends on the document's size.
+bool contains_media_rule(std::string_view css) {
+    for (std::size_t at = css.find('@'); at != std::string_view::npos; at = css.find('@', at + 1))
+        if (iequals(css.substr(at + 1, 5), "media")) return true;
+    return false;
+}
+
+} // namespace
+
 // Every <style> element's sheet (type text/css, empty or absent), in
 // document order, before any element is styled: a sheet applies to the
 // whole document. Its text is its character data, CDATA included.
@@ -361,7 +400,8 @@ void Reader::read_style_sheets(const pugi::xml_node& root) {
                          std::to_string(options_.max_attribute_bytes) + " bytes");
         std::vector<CssProblem> problems;
         const std::size_t font_faces = sheet_.font_faces().size();
-        sheet_.parse(css, problems, MediaContext{options_.dark});
+        if (!media_ && contains_media_rule(css)) media_ = media_context(root);
+        sheet_.parse(css, problems, media_ ? *media_ : MediaContext{options_.dark});
         for (const CssProblem& p : problems) {
             // The problem's line within the sheet, from the <style> element's.
             SvgDiagnostic d = located(st, "style sheet: " + p.message);

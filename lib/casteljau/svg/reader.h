@@ -21,6 +21,7 @@
 // length and document size are checked before the work they bound.
 #pragma once
 
+#include "casteljau/render/output_size.h"
 #include "casteljau/scene/scene.h"
 #include "casteljau/text/font_database.h"
 
@@ -54,6 +55,10 @@ struct SvgOptions {
     /// The color scheme that \@media (prefers-color-scheme) matches in style
     /// sheets (svg/media_query.h): light, or dark when set.
     bool dark = false;
+    /// The size the picture will be drawn at, as the front end asks for it
+    /// (render/output_size.h): what \@media width, height, aspect-ratio and
+    /// orientation are answered for. None given: the document's own size.
+    SizeRequest media_size;
     /// The first problem in the input is an error (no image), instead of a
     /// warning and the spec's recovery.
     bool strict = false;

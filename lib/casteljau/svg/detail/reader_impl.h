@@ -135,6 +135,11 @@ class Reader {
     // A path's d: the attribute, or the CSS d property (svg/d_property.cpp).
     Path path_data(const pugi::xml_node& n);
     Scene read();
+    MediaContext media_context(const pugi::xml_node& root);
+    std::pair<double, double> document_size(const pugi::xml_node& root,
+                                            const std::optional<ViewBox>& box,
+                                            const LengthContext& ctx);
+    std::optional<MediaContext> media_; // what @media is answered for, once a sheet has one
     std::optional<Affine> viewport(const pugi::xml_node& root, Scene& scene,
                                    const LengthContext& ctx);
     std::optional<ViewBox> view_box(const pugi::xml_node& n);
