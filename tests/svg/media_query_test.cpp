@@ -93,5 +93,19 @@ TEST(MediaQuery, TheReaderAnswersForTheSizeTheFrontEndAsksFor) {
     EXPECT_EQ(warnings, 0u);
 }
 
+// An SVG image's queries answer for its own size, not for the size asked of
+// the document that draws it.
+TEST(MediaQuery, AnSvgImageAnswersForItsOwnSize) {
+    const std::string svg =
+        R"svg(<svg xmlns="http://www.w3.org/2000/svg" width="100" height="100">)svg"
+        R"svg(<image width="100" height="100" href="data:image/svg+xml,%3Csvg )svg"
+        R"svg(xmlns='http://www.w3.org/2000/svg' width='100' height='100'%3E%3Cstyle%3E)svg"
+        R"svg(rect { fill: red } @media (max-width: 50px) { rect { fill: blue } })svg"
+        R"svg(%3C/style%3E%3Crect width='100' height='100'/%3E%3C/svg%3E"/></svg>)svg";
+    SvgOptions o;
+    o.media_size.width = 10;
+    EXPECT_EQ(fill_of(svg, o), (Rgba{1, 0, 0, 1}));
+}
+
 } // namespace
 } // namespace casteljau

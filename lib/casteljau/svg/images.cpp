@@ -88,6 +88,8 @@ const Reader::ImageSource& Reader::image_source(const pugi::xml_node& n, const s
         options_.max_image_pixels_total - std::min(budget.pixels, options_.max_image_pixels_total));
     SvgOptions nested = options_;
     ++nested.image_depth;
+    // Its @media answers for its own size: the size it is drawn at is not known yet.
+    nested.media_size = {};
     const auto svg_from = [&](SvgResult doc) {
         for (SvgDiagnostic& w : doc.warnings)
             if (!quiet_) warnings_.push_back(std::move(w));
@@ -157,10 +159,9 @@ void Reader::image(const pugi::xml_node& n, const StyleState& style, const Affin
         h = *w * src.height / src.width;
     }
     if (!non_negative(n, "width", w) || !non_negative(n, "height", h) || *w == 0 || *h == 0) return;
-    const Affine port =
-        m * Affine::translate(given ? given->min().to_vec()
-                                    : Vec2{length(n, "x", vw_, ctx).value_or(0),
-                                           length(n, "y", vh_, ctx).value_or(0)});
+    const Affine port = m * Affine::translate(given ? given->min().to_vec()
+                                                    : Vec2{length(n, "x", vw_, ctx).value_or(0),
+                                                           length(n, "y", vh_, ctx).value_or(0)});
     const Affine fit = view_map(n, ViewBox{0, 0, src.width, src.height}, *w, *h);
     const Rect viewport{0, 0, *w, *h};
     if (src.svg) {
