@@ -116,26 +116,27 @@ void BasicCanvas<Pixel>::settle() {
 }
 
 template <class Pixel>
-void BasicCanvas<Pixel>::clear_columns(Pixel* r, int y, int x1) {
-    // From a local: an 8-bit pixel's channels are chars, which may alias
-    // anything, so stores through r could change the member clear_ for all
-    // GCC knows, and it reloads it for every pixel (scalar 4-byte stores).
+void BasicCanvas<Pixel>::clear_columns(int y, int x1) {
     open_row(y);
+    fill_to(y, x1);
+}
+
+template <class Pixel>
+void BasicCanvas<Pixel>::fill_to(int y, int x1) {
+    // From a local: an 8-bit pixel's channels are chars, which may alias
+    // anything, so stores through the row could change the member clear_
+    // for all GCC knows, and it reloads it for every pixel (scalar 4-byte
+    // stores).
     const Pixel c = clear_;
     int& clean = clean_[std::size_t(y)];
-    fill_run(r + clean, x1 - clean, c);
+    fill_run(pixels() + std::size_t(y) * std::size_t(w_) + clean, x1 - clean, c);
     clean = x1;
 }
 
 template <class Pixel>
 void BasicCanvas<Pixel>::open_row(int y) {
     if (y == open_) return;
-    if (open_ >= 0) {
-        int& clean = clean_[std::size_t(open_)];
-        const Pixel c = clear_;
-        fill_run(pixels() + std::size_t(open_) * std::size_t(w_) + clean, w_ - clean, c);
-        clean = w_;
-    }
+    if (open_ >= 0) fill_to(open_, w_);
     open_ = y;
 }
 

@@ -121,11 +121,14 @@ class BasicCanvas {
     /// the clear are cleared first.
     Pixel* row_to(int y, int x1) {
         Pixel* r = pixels() + std::size_t(y) * std::size_t(w_);
-        if (!clean_.empty() && clean_[std::size_t(y)] < x1) clear_columns(r, y, x1);
+        if (!clean_.empty() && clean_[std::size_t(y)] < x1) clear_columns(y, x1);
         return r;
     }
-    /// Clears the columns [clean_[y], x1) of row r = row y and moves its cursor to x1.
-    void clear_columns(Pixel* r, int y, int x1);
+    /// Clears row y's columns [clean_[y], x1) (opening the row, open_row),
+    /// and moves its cursor to x1.
+    void clear_columns(int y, int x1);
+    /// The same for a row already open.
+    void fill_to(int y, int x1);
     Pixel* pixels() { return view_ ? view_ : px_.data(); }
     const Pixel* pixels() const { return view_ ? view_ : px_.data(); }
     std::vector<Pixel> px_;

@@ -1,5 +1,7 @@
 #include "casteljau/raster/box.h"
 
+#include "casteljau/raster/sweep.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -26,9 +28,9 @@ BoxRow columns(float xl, float xr) {
     return r;
 }
 
-// Emits one pixel of coverage c, if visible (the sweep's threshold).
+// Emits one pixel of coverage c, if visible.
 void pixel(SpanSink& sink, int y, int x, float c) {
-    if (c >= 1e-6f) sink.span({y, x, 1, &c, 0.0f});
+    if (c >= kInvisible) sink.span({y, x, 1, &c, 0.0f});
 }
 
 } // namespace
@@ -48,7 +50,7 @@ bool fill_box(const EdgeList& edges, SpanSink& sink) {
     for (int y = y_begin; y < y_end; ++y) {
         const float v = std::min(a.y1, float(y + 1)) - std::max(a.y0, float(y));
         if (row.run_begin > row.left) pixel(sink, y, row.left, row.left_cover * v);
-        if (row.run_begin < row.run_end && v >= 1e-6f)
+        if (row.run_begin < row.run_end && v >= kInvisible)
             sink.span({y, row.run_begin, row.run_end - row.run_begin, nullptr, v});
         pixel(sink, y, row.right, row.right_cover * v);
     }

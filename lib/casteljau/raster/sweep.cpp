@@ -11,10 +11,6 @@ namespace casteljau {
 
 namespace {
 
-// Coverage below this is invisible in any 8-bit or half-float output; runs of
-// it (the inside of holes, where float sums cancel to ~1e-7) are not emitted.
-constexpr float kInvisible = 1e-6f;
-
 // A run of constant coverage at least this long leaves as a span of its own
 // with one coverage value; shorter runs join the per-pixel span around them,
 // where writing a few coverage values costs less than an extra span call.

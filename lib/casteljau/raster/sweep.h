@@ -19,6 +19,11 @@ namespace casteljau {
 
 enum class FillRule { NonZero, EvenOdd };
 
+/// Coverage below this is invisible in any 8-bit or half-float output; runs
+/// of it (the inside of holes, where float sums cancel to ~1e-7) are not
+/// emitted as spans.
+inline constexpr float kInvisible = 1e-6f;
+
 inline float apply_fill_rule(float s, FillRule rule) {
     const float a = s < 0 ? -s : s;
     if (rule == FillRule::NonZero) return a < 1.0f ? a : 1.0f;

@@ -1,5 +1,6 @@
 #include "casteljau/svg/font_face.h"
 
+#include "casteljau/io/text_file.h"
 #include "casteljau/svg/detail/ascii.h"
 #include "casteljau/svg/detail/reader_impl.h"
 #include "casteljau/svg/resource_url.h"
@@ -8,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 
 namespace casteljau {
 
@@ -83,12 +83,11 @@ std::optional<FontFaceSource> source(std::string_view item) {
     return s;
 }
 
+// One weight of a range: font-weight's, but for the relative keywords,
+// which a face's descriptor cannot take.
 std::optional<int> weight(std::string_view w) {
-    if (iequals(w, "normal")) return 400;
-    if (iequals(w, "bold")) return 700;
-    const std::optional<double> n = parse_number(w);
-    if (!n || *n < 1 || *n > 1000) return std::nullopt;
-    return int(std::lround(*n));
+    if (iequals(w, "bolder") || iequals(w, "lighter")) return std::nullopt;
+    return parse_font_weight(w, 400);
 }
 
 // font-weight: one weight, two (a range, in either order), or auto (any).
@@ -163,24 +162,12 @@ std::optional<std::vector<unsigned char>> Reader::font_source_bytes(const FontFa
         error = file.error;
         return std::nullopt;
     }
-    std::ifstream in(file.path, std::ios::binary | std::ios::ate);
-    const std::streamoff size = in ? std::streamoff(in.tellg()) : -1;
-    if (size < 0) {
-        error = "'" + s.url + "' cannot be read";
+    TextFile f = read_text_file(file.path, kMaxFontFileBytes);
+    if (!f.error.empty()) {
+        error = f.error;
         return std::nullopt;
     }
-    if (std::size_t(size) > kMaxFontFileBytes) {
-        error = "'" + s.url + "' is over the limit of " + std::to_string(kMaxFontFileBytes >> 20) +
-                " MiB";
-        return std::nullopt;
-    }
-    std::vector<unsigned char> bytes(std::size_t(size), 0);
-    in.seekg(0);
-    if (!in.read(reinterpret_cast<char*>(bytes.data()), size)) {
-        error = "'" + s.url + "' cannot be read";
-        return std::nullopt;
-    }
-    return bytes;
+    return std::vector<unsigned char>(f.text.begin(), f.text.end());
 }
 
 // The sheets' @font-face rules from `first` on, of the <style> element `st`:
@@ -208,8 +195,7 @@ void Reader::load_font_faces(const pugi::xml_node& st, std::size_t first) {
             continue;
         }
         if (!document_fonts_) document_fonts_ = FontDatabase::layer(fonts());
-        std::string why;
-        bool loaded = false;
+        bool loaded = false; // else `error` says why the last source tried failed
         for (const FontFaceSource& s : rule->sources) {
             if (!s.format.empty() && !readable_font_format(s.format)) continue;
             error.clear();
@@ -220,11 +206,10 @@ void Reader::load_font_faces(const pugi::xml_node& st, std::size_t first) {
                 loaded = document_fonts_->add_font_data(rule->descriptors, std::move(data), error);
             }
             if (loaded || font_faces_ >= kMaxFontFaces) break;
-            why = error;
         }
         if (!loaded)
             warn_rule("no source of '" + rule->descriptors.family + "' loads" +
-                      (why.empty() ? std::string() : " (" + why + ")") +
+                      (error.empty() ? std::string() : " (" + error + ")") +
                       "; its text takes the next family");
     }
 }

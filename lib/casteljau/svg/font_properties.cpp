@@ -161,21 +161,6 @@ std::optional<std::string> family_name(std::string_view v, std::size_t& i) {
     return name;
 }
 
-// font-weight (2.2): a keyword, bolder or lighter by the table of 2.2 from
-// the parent's weight, or a number from 1 to 1000 (rounded: the computed
-// weight is kept as an integer).
-std::optional<int> parse_font_weight(std::string_view v, int parent) {
-    if (iequals(v, "normal")) return 400;
-    if (iequals(v, "bold")) return 700;
-    if (iequals(v, "bolder"))
-        return parent < 350 ? 400 : parent < 550 ? 700 : std::max(parent, 900);
-    if (iequals(v, "lighter"))
-        return parent < 100 ? parent : parent < 550 ? 100 : parent < 750 ? 400 : 700;
-    const auto n = parse_number(v);
-    if (!n || *n < 1 || *n > 1000) return std::nullopt;
-    return int(std::lround(*n));
-}
-
 // An angle (CSS Values 3, 7.1) in degrees; a unit is required.
 std::optional<double> parse_angle(std::string_view v) {
     std::string_view unit;
@@ -471,6 +456,21 @@ std::string apply_font_shorthand(std::string_view value, const StyleState& paren
 }
 
 } // namespace
+
+// font-weight (2.2): a keyword, bolder or lighter by the table of 2.2 from
+// the parent's weight, or a number from 1 to 1000 (rounded: the computed
+// weight is kept as an integer).
+std::optional<int> parse_font_weight(std::string_view v, int parent) {
+    if (iequals(v, "normal")) return 400;
+    if (iequals(v, "bold")) return 700;
+    if (iequals(v, "bolder"))
+        return parent < 350 ? 400 : parent < 550 ? 700 : std::max(parent, 900);
+    if (iequals(v, "lighter"))
+        return parent < 100 ? parent : parent < 550 ? 100 : parent < 750 ? 400 : 700;
+    const auto n = parse_number(v);
+    if (!n || *n < 1 || *n > 1000) return std::nullopt;
+    return int(std::lround(*n));
+}
 
 std::optional<std::vector<std::string>> parse_font_family(std::string_view v) {
     std::vector<std::string> names;

@@ -1,11 +1,11 @@
 #include "casteljau/svg/media_query.h"
 
 #include "casteljau/svg/detail/ascii.h"
+#include "casteljau/svg/style.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdlib>
 #include <optional>
 #include <vector>
 
@@ -16,47 +16,26 @@ using svg_detail::trim;
 
 namespace {
 
-// A length in px (16 px to the em: a media query has no font size); a bare
-// 0 is 0.
-std::optional<double> length_px(std::string_view v) {
-    std::size_t i = 0;
-    while (i < v.size() && (std::isdigit(static_cast<unsigned char>(v[i])) || v[i] == '.' ||
-                            v[i] == '+' || v[i] == '-' || v[i] == 'e'))
-        ++i;
-    // An exponent's 'e' is taken only before a digit or sign ("2em" is 2 em).
-    while (i > 0 && v[i - 1] == 'e') --i;
-    const std::string number(v.substr(0, i));
-    char* end = nullptr;
-    const double n = number.empty() ? 0 : std::strtod(number.c_str(), &end);
-    if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(n))
-        return std::nullopt;
-    const std::string_view unit = v.substr(i);
-    if (unit.empty()) return n == 0 ? std::optional<double>(0) : std::nullopt;
-    const struct {
-        std::string_view unit;
-        double px;
-    } units[] = {{"px", 1},         {"em", 16},        {"rem", 16},
-                 {"in", 96},        {"cm", 96 / 2.54}, {"mm", 9.6 / 2.54},
-                 {"q", 2.4 / 2.54}, {"pt", 96.0 / 72}, {"pc", 16}};
-    for (const auto& u : units)
-        if (unit == u.unit) return n * u.px;
-    return std::nullopt;
+// A length in px (style.h's parse_length, 16 px to the em: a media query
+// has no font size), with a unit unless it is 0, and no percentage.
+std::optional<double> length_px(std::string_view v, const MediaContext& m) {
+    std::string_view unit;
+    const std::optional<double> n = parse_number(v, &unit);
+    if (!n || (unit.empty() && *n != 0) || unit == "%") return std::nullopt;
+    return parse_length(v, 0, LengthContext{16, 16, m.width, m.height});
 }
 
-// A ratio, "a / b" or a number.
+// A ratio, "a / b" or a number, both positive.
 std::optional<double> ratio(std::string_view v) {
     const std::size_t slash = v.find('/');
-    const std::string a(trim(v.substr(0, slash)));
-    const std::string b(slash == std::string_view::npos ? "1" : trim(v.substr(slash + 1)));
-    char *ea = nullptr, *eb = nullptr;
-    const double x = std::strtod(a.c_str(), &ea), y = std::strtod(b.c_str(), &eb);
-    if (a.empty() || b.empty() || ea != a.c_str() + a.size() || eb != b.c_str() + b.size() ||
-        !(x > 0) || !(y > 0) || !std::isfinite(x / y))
-        return std::nullopt;
-    return x / y;
+    const auto a = parse_number(trim(v.substr(0, slash)));
+    const auto b = slash == std::string_view::npos ? std::optional<double>(1)
+                                                   : parse_number(trim(v.substr(slash + 1)));
+    if (!a || !b || !(*a > 0) || !(*b > 0) || !std::isfinite(*a / *b)) return std::nullopt;
+    return *a / *b;
 }
 
-// How a size feature's actual value compares to one given: -1, 0 or 1.
+// How a size feature's actual value must compare with one given.
 enum class Compare { Less, LessEqual, Equal, GreaterEqual, Greater };
 
 bool holds(double actual, Compare c, double given) {
@@ -77,61 +56,64 @@ bool holds(double actual, Compare c, double given) {
     return false;
 }
 
+// A size feature's actual value, by name (the device- forms the same).
+std::optional<double> actual(std::string_view name, const MediaContext& m) {
+    if (name.substr(0, 7) == "device-") name.remove_prefix(7);
+    if (name == "width") return m.width;
+    if (name == "height") return m.height;
+    if (name == "aspect-ratio") return m.height > 0 ? m.width / m.height : 0;
+    return std::nullopt;
+}
+
+// A value given for the feature `name`: a ratio or a length.
+std::optional<double> given(std::string_view name, std::string_view v, const MediaContext& m) {
+    return name.find("aspect-ratio") != std::string_view::npos ? ratio(v) : length_px(v, m);
+}
+
+// The range syntax (4.1): name op value, value op name, or value op name op
+// value. nullopt when `f` names no size feature; false with `known` false
+// when the value is malformed.
+std::optional<bool> range_feature(std::string_view f, const MediaContext& m, bool& known) {
+    std::vector<std::string_view> parts, ops;
+    std::size_t start = 0;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+        if (f[i] != '<' && f[i] != '>' && f[i] != '=') continue;
+        parts.push_back(trim(f.substr(start, i - start)));
+        const std::size_t len = i + 1 < f.size() && f[i + 1] == '=' && f[i] != '=' ? 2 : 1;
+        ops.push_back(f.substr(i, len));
+        i += len - 1;
+        start = i + 1;
+    }
+    parts.push_back(trim(f.substr(start)));
+    if (parts.size() > 3) return std::nullopt;
+    const std::size_t at = parts.size() == 3 || !actual(parts[0], m) ? 1 : 0; // the name
+    const std::optional<double> a = actual(parts[at], m);
+    if (!a) return std::nullopt;
+    if (!known) return false;
+    bool result = true;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        if (k == at) continue;
+        const std::optional<double> v = given(parts[at], parts[k], m);
+        if (!v) return known = false;
+        // "value op name" reads op from the value's side: flipped.
+        const std::string_view o = ops[k < at ? k : k - 1];
+        const bool less = (o[0] == '<') != (k < at);
+        const Compare c = o == "="        ? Compare::Equal
+                          : o.size() == 2 ? (less ? Compare::LessEqual : Compare::GreaterEqual)
+                                          : (less ? Compare::Less : Compare::Greater);
+        result = result && holds(*a, c, *v);
+    }
+    return result;
+}
+
 // Answers a size feature (media_query.h): nullopt when `f` is no size
 // feature; false with `known` false when there is no size or the value is
 // malformed.
 std::optional<bool> size_feature(std::string_view f, const MediaContext& m, bool& known) {
     known = m.width > 0 && m.height > 0;
-    // The feature's actual value, by name (device- forms the same).
-    const auto actual = [&](std::string_view name) -> std::optional<double> {
-        if (name.substr(0, 7) == "device-") name.remove_prefix(7);
-        if (name == "width") return m.width;
-        if (name == "height") return m.height;
-        if (name == "aspect-ratio") return m.height > 0 ? m.width / m.height : 0;
-        return std::nullopt;
-    };
-    const auto value = [&](std::string_view name, std::string_view v) {
-        return name.find("aspect-ratio") != std::string_view::npos ? ratio(v) : length_px(v);
-    };
-    const std::size_t op = f.find_first_of("<>=");
     const std::size_t colon = f.find(':');
-    if (op != std::string_view::npos && colon == std::string_view::npos) {
-        // Range syntax: [value op] name op value, or value op name.
-        std::vector<std::string_view> parts;
-        std::vector<std::string_view> ops;
-        std::size_t start = 0;
-        for (std::size_t i = 0; i < f.size();) {
-            if (f[i] != '<' && f[i] != '>' && f[i] != '=') {
-                ++i;
-                continue;
-            }
-            parts.push_back(trim(f.substr(start, i - start)));
-            const std::size_t len = i + 1 < f.size() && f[i + 1] == '=' && f[i] != '=' ? 2 : 1;
-            ops.push_back(f.substr(i, len));
-            i += len;
-            start = i;
-        }
-        parts.push_back(trim(f.substr(start)));
-        const auto compare = [](std::string_view o, bool flip) {
-            if (o == "=") return Compare::Equal;
-            const bool less = (o[0] == '<') != flip;
-            return o.size() == 2 ? (less ? Compare::LessEqual : Compare::GreaterEqual)
-                                 : (less ? Compare::Less : Compare::Greater);
-        };
-        const std::size_t at = actual(parts[0]) ? 0 : parts.size() > 1 && actual(parts[1]) ? 1 : 9;
-        if (at == 9 || parts.size() > 3 || (parts.size() == 3 && at != 1)) return std::nullopt;
-        if (!known) return false;
-        const std::string_view name = parts[at];
-        bool result = true;
-        for (std::size_t k = 0; k < parts.size(); ++k) {
-            if (k == at) continue;
-            const std::optional<double> v = value(name, parts[k]);
-            if (!v) return known = false;
-            // "value op name" reads op from the value's side: flip it.
-            result = result && holds(*actual(name), compare(ops[k < at ? k : k - 1], k < at), *v);
-        }
-        return result;
-    }
+    if (colon == std::string_view::npos && f.find_first_of("<>=") != std::string_view::npos)
+        return range_feature(f, m, known);
     std::string_view name = trim(f.substr(0, colon));
     Compare c = Compare::Equal;
     if (name.substr(0, 4) == "min-")
@@ -144,11 +126,11 @@ std::optional<bool> size_feature(std::string_view f, const MediaContext& m, bool
         if (v != "portrait" && v != "landscape") return known = false;
         return (v == "portrait") == (m.height >= m.width);
     }
-    const std::optional<double> a = actual(name);
+    const std::optional<double> a = actual(name, m);
     if (!a) return std::nullopt;
     if (!known) return false;
     if (colon == std::string_view::npos) return c == Compare::Equal && *a != 0; // boolean
-    const std::optional<double> v = value(name, trim(f.substr(colon + 1)));
+    const std::optional<double> v = given(name, trim(f.substr(colon + 1)), m);
     if (!v) return known = false;
     return holds(*a, c, *v);
 }

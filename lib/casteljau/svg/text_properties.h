@@ -52,7 +52,7 @@ struct BaselineShift {
     /// Which of the four it is.
     enum class Kind { Baseline, Sub, Super, Length };
     Kind kind = Kind::Baseline; ///< which of the four
-    double px = 0; ///< for Length; a percentage is of the element's font size
+    double px = 0;              ///< for Length; a percentage is of the element's font size
 };
 
 /// text-decoration lines (CSS Text Decoration 3, 2.1).
@@ -104,6 +104,10 @@ struct TextProps {
 std::optional<std::string> apply_text_property(std::string_view name, std::string_view value,
                                                const StyleState& parent, StyleState& style,
                                                ElementProps& props, const LengthContext& ctx);
+
+/// A font-weight (CSS Fonts 4, 2.2): normal, bold, a number from 1 to 1000
+/// (rounded), or bolder or lighter than `parent`; nullopt when invalid.
+std::optional<int> parse_font_weight(std::string_view v, int parent);
 
 /// A font-family list (CSS Fonts 4, 2.1): names, quoted or as identifier
 /// sequences, separated by commas; nullopt when malformed.
