@@ -445,13 +445,17 @@ def generate_text(folder, svg):
            "</tspan>" * 200))
 
 
-# file -> (extra arguments, time bound in seconds)
+# file -> (extra arguments, time bound in seconds). The CPU time includes
+# the system's, which is mostly page faults: on the 2-core machines of
+# 2026-11-29 a fault cost about 6 us (a paravirtualized kernel), and the cases
+# that build hundreds of MB took 2-3.3 s where the bound of 2 had been 5x
+# their time: those bounds are about 2x that machine's slowest run.
 VALID = {
     "path_1M_segments.svg": ([], 10.0),
     "control_points_1e9_apart.svg": ([], 2.0),
     "circle_1e7_px_off_canvas.svg": ([], 2.0),
     "subpixel_shapes_100k.svg": ([], 5.0),
-    "round_joins_1e6_px_wide.svg": ([], 2.0),
+    "round_joins_1e6_px_wide.svg": ([], 5.0),
     "stroke_1e300_wide.svg": ([], 2.0),
     "patch_collapsed_edge.bpt": (["--width", "320", "--height", "240"], 2.0),
     "pattern_tiles_1e-6_px.svg": ([], 3.0),
@@ -474,10 +478,10 @@ VALID = {
     "text_invalid_char_refs.svg": ([], 2.0),
     "text_unicode_edges.svg": ([], 2.0),
     "text_bidi_nested_200.svg": ([], 2.0),
-    "text_chars_1e6.svg": ([], 2.0),
-    "text_tspans_1e5.svg": ([], 2.0),
+    "text_chars_1e6.svg": ([], 4.0),
+    "text_tspans_1e5.svg": ([], 7.0),
     "text_lists_1e5.svg": ([], 2.0),
-    "text_chunks_1e5.svg": ([], 2.0),
+    "text_chunks_1e5.svg": ([], 5.0),
     "text_chunks_1e4_of_1e4_tspans.svg": ([], 2.0),
     "text_path_1e5_segments_50_chunks.svg": ([], 2.0),
     "text_fallback_2e4_chars.svg": ([], 2.0),

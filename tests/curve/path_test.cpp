@@ -102,6 +102,51 @@ TEST(Path, KeptControlBoundsEqualTheBoxFromScratch) {
     }
 }
 
+// add_subpath(Subpath&&) takes the segments' storage; the path must be the
+// one the copying form builds, in every state the next call sees.
+TEST(Path, MovedSubpathBuildsThePathOfTheCopiedOne) {
+    testing::Rng rng(29);
+    for (int i = 0; i < 300; ++i) {
+        Path copied, moved;
+        for (int step = 0; step < 6; ++step) {
+            Subpath sp{rng.point(100), {}, rng.integer(0, 1) == 1};
+            const int n = rng.integer(0, 3); // empty subpaths too
+            Point at = sp.start;
+            for (int k = 0; k < n; ++k) {
+                const Point to = k == n - 1 && rng.integer(0, 2) == 0 ? sp.start : rng.point(100);
+                if (rng.integer(0, 1) == 0)
+                    sp.segments.push_back(Line{{at, to}});
+                else
+                    sp.segments.push_back(CubicBez{{at, rng.point(200), rng.point(200), to}});
+                at = to;
+            }
+            copied.add_subpath(sp);
+            moved.add_subpath(std::move(sp));
+            if (rng.integer(0, 2) == 0) { // the state the next builder call starts from
+                const Point p = rng.point(100);
+                copied.line_to(p);
+                moved.line_to(p);
+            }
+            ASSERT_EQ(moved.subpaths().size(), copied.subpaths().size()) << i << " " << step;
+            for (std::size_t k = 0; k < copied.subpaths().size(); ++k) {
+                const Subpath &a = copied.subpaths()[k], &b = moved.subpaths()[k];
+                ASSERT_EQ(b.start, a.start) << i << " " << step << " " << k;
+                ASSERT_EQ(b.closed, a.closed) << i << " " << step << " " << k;
+                ASSERT_EQ(b.segments.size(), a.segments.size()) << i << " " << step << " " << k;
+                for (std::size_t j = 0; j < a.segments.size(); ++j)
+                    ASSERT_EQ(segment_end(b.segments[j]), segment_end(a.segments[j]));
+            }
+            ASSERT_EQ(moved.current_point(), copied.current_point()) << i << " " << step;
+            const Rect want = copied.control_bounds(), got = moved.control_bounds();
+            ASSERT_EQ(got.is_empty(), want.is_empty()) << i << " " << step;
+            if (!want.is_empty()) {
+                ASSERT_EQ(got.min(), want.min()) << i << " " << step;
+                ASSERT_EQ(got.max(), want.max()) << i << " " << step;
+            }
+        }
+    }
+}
+
 TEST(Path, ContinuityOfConstructedJoints) {
     // Two cubics meeting at (10, 0); the second one's handles set each level.
     const CubicBez a{{0, 0}, {3, 4}, {7, -2}, {10, 0}};

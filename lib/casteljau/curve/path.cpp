@@ -174,6 +174,18 @@ void Path::add_subpath(const Subpath& sp) {
     if (sp.closed) close();
 }
 
+void Path::add_subpath(Subpath&& sp) {
+    move_to(sp.start);
+    if (!sp.segments.empty()) {
+        // What append() leaves, segment by segment: the box is a union, in any order.
+        control_box_ = control_box_.united(subpath_box(sp, segment_control_bounds));
+        current_ = segment_end(sp.segments.back());
+        lone_start_ = false;
+        subpaths_.back().segments = std::move(sp.segments);
+    }
+    if (sp.closed) close();
+}
+
 void Path::close() {
     if (!open_) return;
     Subpath& s = subpaths_.back();

@@ -85,6 +85,12 @@ class Path {
     /// Appends a whole subpath (e.g. one built by BezierSpline::to_subpath or
     /// interpolate_c2) as move_to, its segments, and close() when it is closed.
     void add_subpath(const Subpath& sp);
+    /// The same, taking the segments' storage: one allocation, the caller's,
+    /// where appending them one by one grows the vector step by step (a text
+    /// of 1e5 one-glyph tspans held 250 MB of glyph outlines, half of it
+    /// the growth's slack). Reserve one segment more for a closed subpath
+    /// whose end is not its start: close() adds the closing line.
+    void add_subpath(Subpath&& sp);
 
     /// Where the next segment starts.
     Point current_point() const { return current_; }

@@ -173,9 +173,9 @@ void append_glyph(Path& out, const LaidGlyph& g, const Affine& m) {
     const Affine to = m * Affine::translate(g.offset) * Affine::scale(g.scale, -g.scale);
     for (const Subpath& sp : g.font->outline(g.glyph).subpaths()) {
         Subpath t{to * sp.start, {}, sp.closed};
-        t.segments.reserve(sp.segments.size());
+        t.segments.reserve(sp.segments.size() + (sp.closed ? 1 : 0)); // + close()'s line
         for (const Segment& s : sp.segments) t.segments.push_back(segment_transformed(s, to));
-        out.add_subpath(t);
+        out.add_subpath(std::move(t));
     }
 }
 
