@@ -110,12 +110,12 @@ using Compressor = std::unique_ptr<libdeflate_compressor, CompressorFree>;
 /// of their count, and how many there are (0 on failure). The buffer is not
 /// zeroed: only the pages the stream fills are ever touched.
 struct Zlib {
-    std::unique_ptr<std::uint8_t[]> bytes;
+    LargeBytes bytes; // huge pages (paint/large_buffer.h): the bound is about the image's size
     std::size_t size = 0;
 };
 Zlib compress(libdeflate_compressor* z, const std::uint8_t* data, std::size_t size) {
     const std::size_t bound = libdeflate_zlib_compress_bound(z, size);
-    Zlib out{std::unique_ptr<std::uint8_t[]>(new std::uint8_t[bound]), 0};
+    Zlib out{LargeBytes(static_cast<unsigned char*>(allocate_large(bound))), 0};
     out.size = libdeflate_zlib_compress(z, data, size, out.bytes.get(), bound);
     return out;
 }
@@ -181,9 +181,9 @@ void put_idat(std::vector<std::uint8_t>& out, const Zlib& stream, std::size_t ch
 } // namespace
 
 PngRows::PngRows(int width, int height)
-    : bytes_(
-          new std::uint8_t[std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0)) * 4 +
-                           std::size_t(std::max(height, 0))]),
+    : bytes_(static_cast<unsigned char*>(
+          allocate_large(std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0)) * 4 +
+                         std::size_t(std::max(height, 0))))),
       width_(std::max(width, 0)), height_(std::max(height, 0)) {}
 
 std::vector<std::uint8_t> encode_png(PngRows&& rows, const PngOptions& options) {

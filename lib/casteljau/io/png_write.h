@@ -17,8 +17,11 @@
 //
 // The rows are filled in place (PngRows) and filtered in place, so that
 // writing a canvas touches one image-sized buffer besides the canvas: on a
-// 1024 px image each 4 MB buffer costs about a thousand page faults.
+// 1024 px image each 4 MB buffer costs about a thousand page faults, or two
+// where the kernel gives it huge pages (paint/large_buffer.h).
 #pragma once
+
+#include "casteljau/paint/large_buffer.h"
 
 #include <cstdint>
 #include <memory>
@@ -61,7 +64,7 @@ class PngRows {
     friend std::vector<std::uint8_t> encode_png(PngRows&& rows, const PngOptions& options);
     std::size_t stride() const { return std::size_t(width_) * 4 + 1; }
     // Each row: a byte for its filter type, then its pixels.
-    std::unique_ptr<std::uint8_t[]> bytes_;
+    LargeBytes bytes_; // huge pages: paint/large_buffer.h
     int width_ = 0, height_ = 0;
 };
 

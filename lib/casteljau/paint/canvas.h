@@ -17,6 +17,7 @@
 
 #include "casteljau/paint/color.h"
 #include "casteljau/paint/gradient.h"
+#include "casteljau/paint/large_buffer.h"
 #include "casteljau/paint/pixel8.h"
 #include "casteljau/raster/span.h"
 
@@ -131,8 +132,8 @@ class BasicCanvas {
     void fill_to(int y, int x1);
     Pixel* pixels() { return view_ ? view_ : px_.data(); }
     const Pixel* pixels() const { return view_ ? view_ : px_.data(); }
-    std::vector<Pixel> px_;
-    Pixel* view_ = nullptr; // another canvas's rows (view_rows), else null
+    std::vector<Pixel, LargeAllocator<Pixel>> px_; // huge pages: large_buffer.h
+    Pixel* view_ = nullptr;                        // another canvas's rows (view_rows), else null
     // view_rows: per row, the columns [0, clean_[y]) hold pixels and the rest
     // await the clear (a span of one shape's row is drawn left to right, so
     // one cursor a row is enough); empty: every pixel holds one.
