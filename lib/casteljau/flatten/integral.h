@@ -5,10 +5,10 @@
 // evenly in that integral, so that every chord deviates by about the same
 // amount; then every chord is checked against the curve, and the few the
 // density misplaces are corrected. Measured on the bench/flatten corpus
-// (bench/README.md, 2026-11-25): 1.043x the optimal count at 0.25 px and
-// 1.029x at 0.1 px at 24 M segments/s (0.69 us a curve), fewer segments than
+// (bench/README.md, 2026-11-29): 1.043x the optimal count at 0.25 px and
+// 1.029x at 0.1 px at 27 M segments/s (0.62 us a curve), fewer segments than
 // the greedy adaptive.h at about 2.5x its speed, 0.8x guided.h's segments at
-// 1.9x its time a curve, and 0.77x the segments of Levien's method
+// 1.7x its time a curve, and 0.77x the segments of Levien's method
 // (levien.h) at equal measured error, in about its time a curve.
 //
 // The plan. With I = integral_0^1 w (a chord over which w integrates to d
