@@ -102,12 +102,27 @@ TEST(Path, KeptControlBoundsEqualTheBoxFromScratch) {
     }
 }
 
-// add_subpath(Subpath&&) takes the segments' storage; the path must be the
-// one the copying form builds, in every state the next call sees.
-TEST(Path, MovedSubpathBuildsThePathOfTheCopiedOne) {
+// add_subpath (copying or taking the segments' storage) builds the path that
+// its documented builder calls build: move_to, append each segment, close()
+// when closed; in every state the next call sees.
+TEST(Path, AddedSubpathsBuildThePathOfTheBuilderCalls) {
     testing::Rng rng(29);
+    const auto same = [](const Path& got, const Path& want) {
+        if (got.subpaths().size() != want.subpaths().size()) return false;
+        for (std::size_t k = 0; k < want.subpaths().size(); ++k) {
+            const Subpath &a = want.subpaths()[k], &b = got.subpaths()[k];
+            if (b.start != a.start || b.closed != a.closed ||
+                b.segments.size() != a.segments.size())
+                return false;
+            for (std::size_t j = 0; j < a.segments.size(); ++j)
+                if (segment_end(b.segments[j]) != segment_end(a.segments[j])) return false;
+        }
+        const Rect wb = want.control_bounds(), gb = got.control_bounds();
+        return got.current_point() == want.current_point() && gb.is_empty() == wb.is_empty() &&
+               (wb.is_empty() || (gb.min() == wb.min() && gb.max() == wb.max()));
+    };
     for (int i = 0; i < 300; ++i) {
-        Path copied, moved;
+        Path built, copied, moved;
         for (int step = 0; step < 6; ++step) {
             Subpath sp{rng.point(100), {}, rng.integer(0, 1) == 1};
             const int n = rng.integer(0, 3); // empty subpaths too
@@ -120,29 +135,17 @@ TEST(Path, MovedSubpathBuildsThePathOfTheCopiedOne) {
                     sp.segments.push_back(CubicBez{{at, rng.point(200), rng.point(200), to}});
                 at = to;
             }
+            built.move_to(sp.start);
+            for (const Segment& seg : sp.segments) built.append(seg);
+            if (sp.closed) built.close();
             copied.add_subpath(sp);
             moved.add_subpath(std::move(sp));
             if (rng.integer(0, 2) == 0) { // the state the next builder call starts from
                 const Point p = rng.point(100);
-                copied.line_to(p);
-                moved.line_to(p);
+                for (Path* path : {&built, &copied, &moved}) path->line_to(p);
             }
-            ASSERT_EQ(moved.subpaths().size(), copied.subpaths().size()) << i << " " << step;
-            for (std::size_t k = 0; k < copied.subpaths().size(); ++k) {
-                const Subpath &a = copied.subpaths()[k], &b = moved.subpaths()[k];
-                ASSERT_EQ(b.start, a.start) << i << " " << step << " " << k;
-                ASSERT_EQ(b.closed, a.closed) << i << " " << step << " " << k;
-                ASSERT_EQ(b.segments.size(), a.segments.size()) << i << " " << step << " " << k;
-                for (std::size_t j = 0; j < a.segments.size(); ++j)
-                    ASSERT_EQ(segment_end(b.segments[j]), segment_end(a.segments[j]));
-            }
-            ASSERT_EQ(moved.current_point(), copied.current_point()) << i << " " << step;
-            const Rect want = copied.control_bounds(), got = moved.control_bounds();
-            ASSERT_EQ(got.is_empty(), want.is_empty()) << i << " " << step;
-            if (!want.is_empty()) {
-                ASSERT_EQ(got.min(), want.min()) << i << " " << step;
-                ASSERT_EQ(got.max(), want.max()) << i << " " << step;
-            }
+            ASSERT_TRUE(same(copied, built)) << "path " << i << " step " << step;
+            ASSERT_TRUE(same(moved, built)) << "path " << i << " step " << step;
         }
     }
 }

@@ -38,7 +38,7 @@ bool huge_pages_on_request() {
 
 TEST(LargeBuffer, AFrameSizedBufferIsWholeHugePagesMarkedForTheKernel) {
     const std::size_t bytes = 4 * 1024 * 1024 + 12345; // a 1024 px frame and a bit
-    const LargeBytes b(static_cast<unsigned char*>(allocate_large(bytes)));
+    const LargeBytes b = large_bytes(bytes);
     ASSERT_NE(b.get(), nullptr);
     EXPECT_EQ(reinterpret_cast<std::uintptr_t>(b.get()) % kHugePageBytes, 0u);
     for (std::size_t i = 0; i < bytes; i += 4096) b[i] = static_cast<unsigned char>(i >> 12);
@@ -53,7 +53,7 @@ TEST(LargeBuffer, AFrameSizedBufferIsWholeHugePagesMarkedForTheKernel) {
 TEST(LargeBuffer, SmallBuffersAreOrdinaryOnes) {
     for (const std::size_t bytes :
          {std::size_t(0), std::size_t(1), std::size_t(4096), kHugePageBytes - 1}) {
-        const LargeBytes b(static_cast<unsigned char*>(allocate_large(bytes)));
+        const LargeBytes b = large_bytes(bytes);
         ASSERT_NE(b.get(), nullptr) << bytes;
         if (bytes > 0) b[bytes - 1] = 1;
     }
@@ -74,7 +74,7 @@ TEST(LargeBuffer, VectorsGrowShrinkAndCopyThroughTheAllocator) {
 // merely huge one: the sanitizers report those as errors, before malloc
 // can return its null.)
 TEST(LargeBuffer, ASizeThatRoundingWouldWrapThrowsBadAlloc) {
-    EXPECT_THROW(allocate_large(~std::size_t(0) - 100), std::bad_alloc);
+    EXPECT_THROW(large_bytes(~std::size_t(0) - 100), std::bad_alloc);
 }
 
 } // namespace

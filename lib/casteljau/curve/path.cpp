@@ -168,11 +168,7 @@ std::optional<Line> fill_closing_line(const Subpath& sp) {
     return Line{end, sp.start};
 }
 
-void Path::add_subpath(const Subpath& sp) {
-    move_to(sp.start);
-    for (const Segment& seg : sp.segments) append(seg);
-    if (sp.closed) close();
-}
+void Path::add_subpath(const Subpath& sp) { add_subpath(Subpath(sp)); }
 
 void Path::add_subpath(Subpath&& sp) {
     move_to(sp.start);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <libdeflate.h>
+#include <memory>
 #include <new>
 #include <string_view>
 #include <utility>
@@ -115,7 +116,7 @@ struct Zlib {
 };
 Zlib compress(libdeflate_compressor* z, const std::uint8_t* data, std::size_t size) {
     const std::size_t bound = libdeflate_zlib_compress_bound(z, size);
-    Zlib out{LargeBytes(static_cast<unsigned char*>(allocate_large(bound))), 0};
+    Zlib out{large_bytes(bound), 0};
     out.size = libdeflate_zlib_compress(z, data, size, out.bytes.get(), bound);
     return out;
 }
@@ -181,9 +182,8 @@ void put_idat(std::vector<std::uint8_t>& out, const Zlib& stream, std::size_t ch
 } // namespace
 
 PngRows::PngRows(int width, int height)
-    : bytes_(static_cast<unsigned char*>(
-          allocate_large(std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0)) * 4 +
-                         std::size_t(std::max(height, 0))))),
+    : bytes_(large_bytes(std::size_t(std::max(width, 0)) * std::size_t(std::max(height, 0)) * 4 +
+                         std::size_t(std::max(height, 0)))),
       width_(std::max(width, 0)), height_(std::max(height, 0)) {}
 
 std::vector<std::uint8_t> encode_png(PngRows&& rows, const PngOptions& options) {

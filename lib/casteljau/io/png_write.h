@@ -24,7 +24,6 @@
 #include "casteljau/paint/large_buffer.h"
 
 #include <cstdint>
-#include <memory>
 #include <span>
 #include <string>
 #include <vector>

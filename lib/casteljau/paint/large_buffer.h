@@ -50,7 +50,12 @@ struct FreeLarge {
     void operator()(void* p) const noexcept { free_large(p); }
 };
 
-/// An array of n bytes from allocate_large, uninitialized.
+/// An array of bytes from allocate_large, uninitialized.
 using LargeBytes = std::unique_ptr<unsigned char[], FreeLarge>;
+
+/// `bytes` bytes from allocate_large, owned; throws std::bad_alloc.
+inline LargeBytes large_bytes(std::size_t bytes) {
+    return LargeBytes(static_cast<unsigned char*>(allocate_large(bytes)));
+}
 
 } // namespace casteljau
