@@ -61,6 +61,36 @@ TYPED_TEST(CanvasFormats, LazilyClearedBandsEqualEagerClearing) {
     }
 }
 
+// Opaque runs of every length from 0 to 80 pixels at every start within 20
+// pixels (every alignment of the 16-byte stores and their overlapping ends),
+// on a band whose lazy clear of the columns left of the run is as short:
+// exactly the run's pixels take the color, the columns left of it the
+// background, and the pixels right of it keep the frame's old value until
+// settle() clears them.
+TYPED_TEST(CanvasFormats, OpaqueRunsOfEveryLengthAndOffsetWriteExactlyTheirPixels) {
+    using Canvas = TypeParam;
+    using Pixel = typename Canvas::pixel_type;
+    const Premul old{0.9f, 0.8f, 0.7f, 1.0f}, background{0.1f, 0.2f, 0.3f, 1.0f};
+    const Premul color{0.25f, 0.5f, 0.75f, 1.0f};
+    const int w = 128;
+    Canvas frame, band;
+    for (int x = 0; x < 20; ++x)
+        for (int len = 0; len <= 80; ++len) {
+            frame.reset(w, 1, 0, 0, old);
+            band.view_rows(frame, 0, 1, background);
+            band.composite_span({0, x, len, nullptr, 1.0f}, color);
+            for (int i = 0; i < w; ++i) {
+                const Premul want = i < x ? background : i < x + len ? color : old;
+                ASSERT_TRUE(same(frame.row(0)[i], pixel_of<Pixel>(want)))
+                    << "run of " << len << " from " << x << ": pixel " << i;
+            }
+            band.settle();
+            for (int i = x + len; i < w; ++i)
+                ASSERT_TRUE(same(frame.row(0)[i], pixel_of<Pixel>(background)))
+                    << "run of " << len << " from " << x << ", settled: pixel " << i;
+        }
+}
+
 // Coverage 0 leaves a pixel's bits as they are, whatever the color and the
 // pixel (the dense sweep sends invisible columns between visible ones as 0).
 TYPED_TEST(CanvasFormats, ZeroCoverageLeavesPixelsBitForBit) {
