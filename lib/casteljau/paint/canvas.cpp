@@ -1,7 +1,8 @@
 #include "casteljau/paint/canvas.h"
 
+#include "casteljau/paint/fill_run.h"
+
 #include <algorithm>
-#include <bit>
 #include <cstdint>
 
 #if defined(__SSE2__)
@@ -14,41 +15,6 @@ namespace {
 
 // d[0, n) = c, through the cache.
 void fill_run(Premul* d, int n, const Premul& c) { std::fill(d, d + n, c); }
-
-// d[0, n) = c: 16-byte stores, aligned, four to a 64-byte line, the
-// unaligned ends written by one overlapping store each. GCC's loop for
-// std::fill over 4-byte structs of chars reloads the color from the stack
-// for every 16 bytes it stores (chars may alias the row) and ran at half
-// this speed: the lazy clears of composite_at and settle() were 60% of
-// their samples in the ellipse's profile. The string store (rep stosd) that
-// long runs took before measured slower than this loop at every row width
-// from 100 to 2048 pixels, cached or not (1024 rows of 1024 pixels: 57
-// against 48 us); the full-canvas scene went from 0.65 to 0.57x Cairo.
-void fill_run(Premul8* d, int n, Premul8 c) {
-#if defined(__SSE2__)
-    if (n >= 4) {
-        auto* b = reinterpret_cast<unsigned char*>(d);
-        unsigned char* const end = b + std::size_t(n) * sizeof c;
-        const __m128i v = _mm_set1_epi32(int(std::bit_cast<std::uint32_t>(c)));
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(b), v);
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(end - 16), v);
-        // A canvas's storage starts on a 16-byte boundary (malloc's and
-        // large_buffer.h's), so every pixel starts on a 4-byte one and the
-        // aligned stores from the first 16-byte boundary write whole pixels.
-        b = reinterpret_cast<unsigned char*>((reinterpret_cast<std::uintptr_t>(b) + 16) &
-                                             ~std::uintptr_t(15));
-        for (; end - b >= 64; b += 64) {
-            _mm_store_si128(reinterpret_cast<__m128i*>(b), v);
-            _mm_store_si128(reinterpret_cast<__m128i*>(b + 16), v);
-            _mm_store_si128(reinterpret_cast<__m128i*>(b + 32), v);
-            _mm_store_si128(reinterpret_cast<__m128i*>(b + 48), v);
-        }
-        for (; end - b >= 16; b += 16) _mm_store_si128(reinterpret_cast<__m128i*>(b), v);
-        return;
-    }
-#endif
-    for (int i = 0; i < n; ++i) d[i] = c;
-}
 
 // Opaque float runs of at least this many bytes (1024 pixels) are stored
 // past the cache: a fill that wide is mostly not drawn over again while

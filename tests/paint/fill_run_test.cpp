@@ -1,0 +1,42 @@
+// fill_run's two forms against the plain loop: runs of every length from 0
+// to 150 pixels at every 4-byte offset within 64 bytes, so that every
+// alignment of the vector stores and of their overlapping ends is met.
+#include "casteljau/paint/fill_run.h"
+
+#include <gtest/gtest.h>
+#include <vector>
+
+namespace casteljau {
+namespace {
+
+using Fill = void (*)(Premul8*, int, Premul8) noexcept;
+
+// Runs `fill` over every run and checks that exactly the run's pixels take
+// the color: the pixels around it keep theirs.
+void expect_exact_runs(Fill fill, const char* name) {
+    const Premul8 old{1, 2, 3, 4}, color{200, 100, 50, 255};
+    constexpr int kMargin = 40, kMaxLen = 150, kOffsets = 16;
+    std::vector<Premul8> row(kMargin + kOffsets + kMaxLen + kMargin);
+    for (int offset = 0; offset < kOffsets; ++offset)
+        for (int len = 0; len <= kMaxLen; ++len) {
+            std::fill(row.begin(), row.end(), old);
+            const int x = kMargin + offset;
+            fill(row.data() + x, len, color);
+            for (int i = 0; i < int(row.size()); ++i)
+                ASSERT_EQ(row[std::size_t(i)], i >= x && i < x + len ? color : old)
+                    << name << ": run of " << len << " from offset " << offset << ", pixel "
+                    << i - x;
+        }
+}
+
+TEST(FillRun, Sse2FormWritesExactlyTheRun) { expect_exact_runs(detail::fill_run_sse2, "sse2"); }
+
+TEST(FillRun, Avx2FormWritesExactlyTheRun) {
+    if (!detail::has_avx2()) GTEST_SKIP() << "this CPU has no AVX2";
+    expect_exact_runs(detail::fill_run_avx2, "avx2");
+}
+
+TEST(FillRun, DispatchedFormWritesExactlyTheRun) { expect_exact_runs(fill_run, "dispatched"); }
+
+} // namespace
+} // namespace casteljau
