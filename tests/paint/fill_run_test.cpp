@@ -1,6 +1,7 @@
 // fill_run's two forms against the plain loop: runs of every length from 0
 // to 150 pixels at every 4-byte offset within 64 bytes, so that every
 // alignment of the vector stores and of their overlapping ends is met.
+#include "casteljau/paint/cpu.h"
 #include "casteljau/paint/fill_run.h"
 
 #include <gtest/gtest.h>
@@ -32,7 +33,7 @@ void expect_exact_runs(Fill fill, const char* name) {
 TEST(FillRun, Sse2FormWritesExactlyTheRun) { expect_exact_runs(detail::fill_run_sse2, "sse2"); }
 
 TEST(FillRun, Avx2FormWritesExactlyTheRun) {
-    if (!detail::has_avx2()) GTEST_SKIP() << "this CPU has no AVX2";
+    if (!cpu_has_avx2()) GTEST_SKIP() << "this CPU has no AVX2";
     expect_exact_runs(detail::fill_run_avx2, "avx2");
 }
 

@@ -83,14 +83,20 @@ TEST(Pixel8, CoverageZeroKeepsAndOpaqueFullCoverageReplaces) {
     }
 }
 
-// Fast against reference: a run blended four pixels at a time carries the
-// bits of blend_over pixel by pixel, per-pixel and constant coverage alike,
-// whatever the run's length (the four-pixel body and the one-pixel tail),
-// with coverage 0 and 1 and opaque sources among the cases.
-TEST(Pixel8, RunsBlendAsPixelByPixel) {
+// Fast against reference: a run blended four or eight pixels at a time
+// carries the bits of blend_over pixel by pixel, per-pixel and constant
+// coverage alike, whatever the run's length (the eight- and four-pixel
+// bodies and the one-pixel tail), with coverage 0 and 1 and opaque sources
+// among the cases: the SSE2 form, the AVX2 form (where the CPU has it) and
+// the one blend_span_over chooses.
+using PerPixelRun = void (*)(Premul8*, int, const Premul&, const float*);
+using ConstantRun = void (*)(Premul8*, int, const Premul&, float);
+
+void expect_runs_blend_as_pixel_by_pixel(PerPixelRun per_pixel, ConstantRun constant,
+                                         const char* name) {
     testing::Rng rng(84);
     for (int trial = 0; trial < 3000; ++trial) {
-        const int n = rng.integer(0, 13);
+        const int n = rng.integer(0, 40);
         std::vector<Premul8> start(std::size_t(n) + 1);
         std::vector<float> k(std::size_t(n) + 1);
         for (int i = 0; i < n; ++i) {
@@ -101,19 +107,46 @@ TEST(Pixel8, RunsBlendAsPixelByPixel) {
         const Premul s = random_premul(rng);
         std::vector<Premul8> want = start, got = start;
         for (int i = 0; i < n; ++i) blend_over(want[std::size_t(i)], s, k[std::size_t(i)]);
-        blend_span_over(got.data(), n, s, k.data());
+        per_pixel(got.data(), n, s, k.data());
         for (int i = 0; i < n; ++i)
             ASSERT_EQ(got[std::size_t(i)], want[std::size_t(i)])
-                << "trial " << trial << " pixel " << i << " of " << n << " k " << k[std::size_t(i)];
+                << name << ": trial " << trial << " pixel " << i << " of " << n << " k "
+                << k[std::size_t(i)];
+        EXPECT_EQ(got[std::size_t(n)], start[std::size_t(n)]) << name << ": wrote past the run";
         const float solid = k[0];
         want = start, got = start;
         for (int i = 0; i < n; ++i) blend_over(want[std::size_t(i)], s, solid);
-        blend_span_over(got.data(), n, s, solid);
+        constant(got.data(), n, s, solid);
         for (int i = 0; i < n; ++i)
             ASSERT_EQ(got[std::size_t(i)], want[std::size_t(i)])
-                << "trial " << trial << " pixel " << i << " of " << n << " solid " << solid;
-        EXPECT_EQ(got[std::size_t(n)], start[std::size_t(n)]) << "wrote past the run";
+                << name << ": trial " << trial << " pixel " << i << " of " << n << " solid "
+                << solid;
+        EXPECT_EQ(got[std::size_t(n)], start[std::size_t(n)]) << name << ": wrote past the run";
     }
+}
+
+TEST(Pixel8, RunsBlendAsPixelByPixel) {
+    expect_runs_blend_as_pixel_by_pixel(
+        [](Premul8* d, int n, const Premul& s, const float* k) { blend_span_over(d, n, s, k); },
+        [](Premul8* d, int n, const Premul& s, float k) { blend_span_over(d, n, s, k); }, "chosen");
+    expect_runs_blend_as_pixel_by_pixel(
+        [](Premul8* d, int n, const Premul& s, const float* k) {
+            detail::blend_run(d, n, s, detail::PerPixel{k});
+        },
+        [](Premul8* d, int n, const Premul& s, float k) {
+            detail::blend_run(d, n, s, detail::Constant{k});
+        },
+        "sse2");
+}
+
+TEST(Pixel8, Avx2RunsBlendAsPixelByPixel) {
+    if (!cpu_has_avx2()) GTEST_SKIP() << "this CPU has no AVX2";
+    expect_runs_blend_as_pixel_by_pixel(
+        [](Premul8* d, int n, const Premul& s, const float* k) {
+            detail::blend_run_avx2(d, n, s, k);
+        },
+        [](Premul8* d, int n, const Premul& s, float k) { detail::blend_run_avx2(d, n, s, k); },
+        "avx2");
 }
 
 } // namespace

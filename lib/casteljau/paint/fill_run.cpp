@@ -1,5 +1,7 @@
 #include "casteljau/paint/fill_run.h"
 
+#include "casteljau/paint/cpu.h"
+
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -64,21 +66,14 @@ void fill_run_sse2(Premul8* d, int n, Premul8 c) noexcept {
     }
     if (end - b >= 32) _mm256_store_si256(reinterpret_cast<__m256i*>(b), v);
 }
-
-bool has_avx2() noexcept {
-    __builtin_cpu_init(); // in case this runs before the constructors that would
-    return __builtin_cpu_supports("avx2");
-}
 #else
 void fill_run_avx2(Premul8* d, int n, Premul8 c) noexcept { fill_run_sse2(d, n, c); }
-bool has_avx2() noexcept { return false; }
 #endif
 
 } // namespace detail
 
 void fill_run(Premul8* d, int n, Premul8 c) noexcept {
-    static const bool avx2 = detail::has_avx2();
-    if (avx2)
+    if (use_avx2)
         detail::fill_run_avx2(d, n, c);
     else
         detail::fill_run_sse2(d, n, c);

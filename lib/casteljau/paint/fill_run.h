@@ -2,8 +2,8 @@
 // the inside of every opaque fill, so the store the frame is bound by on
 // large areas (the full-canvas scene is one such run a row).
 //
-// Two forms, chosen once per process: 16-byte SSE2 stores (the x86-64
-// baseline) and 32-byte AVX2 stores where the CPU has them. Both store the
+// Two forms, chosen once per process (cpu.h): 16-byte SSE2 stores (the
+// x86-64 baseline) and 32-byte AVX2 stores where the CPU has them. Both store the
 // run's first and last vector unaligned, overlapping the aligned stores
 // between them, so no pixel is written one at a time. They write the same
 // bytes (tests/paint/fill_run_test.cpp). Measured on bench/README.md's
@@ -29,10 +29,8 @@ void fill_run(Premul8* d, int n, Premul8 c) noexcept;
 namespace detail {
 /// fill_run with SSE2 stores (scalar where SSE2 is not the baseline).
 void fill_run_sse2(Premul8* d, int n, Premul8 c) noexcept;
-/// fill_run with AVX2 stores; only where has_avx2().
+/// fill_run with AVX2 stores; only where cpu_has_avx2() (cpu.h).
 void fill_run_avx2(Premul8* d, int n, Premul8 c) noexcept;
-/// Whether this CPU runs AVX2 (and fill_run uses it).
-bool has_avx2() noexcept;
 } // namespace detail
 
 } // namespace casteljau

@@ -17,6 +17,7 @@
 #pragma once
 
 #include "casteljau/paint/color.h"
+#include "casteljau/paint/cpu.h"
 
 #include <bit>
 #include <cstdint>
@@ -150,16 +151,31 @@ void blend_run(Premul8* d, int n, const Premul& s, Coverage coverage) {
 }
 } // namespace detail
 
+namespace detail {
+/// blend_run with per-pixel coverage k, eight pixels at a time (AVX2: two
+/// pixels to a register, each with the four-pixel form's arithmetic, so the
+/// same bits); only where cpu_has_avx2() (cpu.h). The tail goes to blend_run.
+void blend_run_avx2(Premul8* d, int n, const Premul& s, const float* k) noexcept;
+/// The same with one coverage k for the whole run.
+void blend_run_avx2(Premul8* d, int n, const Premul& s, float k) noexcept;
+} // namespace detail
+
 /// blend_over of `s` onto d[0, n), pixel i through coverage k[i]. An opaque
 /// source needs no run-by-run test for full coverage: k = 1 gives inv = 0
 /// and round(255 S + 0 D) = quantize(S), the store's bits.
 inline void blend_span_over(Premul8* d, int n, const Premul& s, const float* k) {
-    detail::blend_run(d, n, s, detail::PerPixel{k});
+    if (use_avx2 && n >= 8)
+        detail::blend_run_avx2(d, n, s, k);
+    else
+        detail::blend_run(d, n, s, detail::PerPixel{k});
 }
 
 /// blend_over of `s` onto d[0, n), every pixel through coverage k.
 inline void blend_span_over(Premul8* d, int n, const Premul& s, float k) {
-    detail::blend_run(d, n, s, detail::Constant{k});
+    if (use_avx2 && n >= 8)
+        detail::blend_run_avx2(d, n, s, k);
+    else
+        detail::blend_run(d, n, s, detail::Constant{k});
 }
 
 } // namespace casteljau
