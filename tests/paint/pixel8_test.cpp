@@ -149,5 +149,38 @@ TEST(Pixel8, Avx2RunsBlendAsPixelByPixel) {
         "avx2");
 }
 
+// The same for shaded runs (a color per pixel, ShadedSpanPainter's), with
+// per-pixel and constant coverage: the four-pixel body reads each pixel's
+// own color and alpha.
+TEST(Pixel8, ShadedRunsBlendAsPixelByPixel) {
+    testing::Rng rng(85);
+    for (int trial = 0; trial < 3000; ++trial) {
+        const int n = rng.integer(0, 21);
+        std::vector<Premul8> start(std::size_t(n) + 1);
+        std::vector<Premul> colors(std::size_t(n) + 1);
+        std::vector<float> k(std::size_t(n) + 1);
+        for (int i = 0; i < n; ++i) {
+            start[std::size_t(i)] = quantize(random_premul(rng));
+            colors[std::size_t(i)] = random_premul(rng);
+            const double pick = rng.uniform(0, 1);
+            k[std::size_t(i)] = pick < 0.2 ? 0.0f : pick < 0.5 ? 1.0f : float(rng.uniform(0, 1));
+        }
+        for (const bool per_pixel : {true, false}) {
+            std::vector<Premul8> want = start, got = start;
+            for (int i = 0; i < n; ++i)
+                blend_over(want[std::size_t(i)], colors[std::size_t(i)],
+                           per_pixel ? k[std::size_t(i)] : k[0]);
+            if (per_pixel)
+                blend_shaded_over(got.data(), n, colors.data(), k.data());
+            else
+                blend_shaded_over(got.data(), n, colors.data(), k[0]);
+            for (int i = 0; i <= n; ++i)
+                ASSERT_EQ(got[std::size_t(i)], want[std::size_t(i)])
+                    << "trial " << trial << " pixel " << i << " of " << n
+                    << (per_pixel ? " per-pixel coverage" : " constant coverage");
+        }
+    }
+}
+
 } // namespace
 } // namespace casteljau

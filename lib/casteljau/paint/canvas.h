@@ -41,6 +41,16 @@ inline void blend_span_over(Premul* d, int n, const Premul& s, float k) {
     for (int i = 0; i < n; ++i) blend_over(d[i], s, k);
 }
 
+/// blend_over of shaded colors s[i] onto d[0, n), pixel i through coverage k[i].
+inline void blend_shaded_over(Premul* d, int n, const Premul* s, const float* k) {
+    for (int i = 0; i < n; ++i) blend_over(d[i], s[i], k[i]);
+}
+
+/// blend_over of shaded colors s[i] onto d[0, n), every pixel through coverage k.
+inline void blend_shaded_over(Premul* d, int n, const Premul* s, float k) {
+    for (int i = 0; i < n; ++i) blend_over(d[i], s[i], k);
+}
+
 /// The float color a float pixel holds: itself.
 inline const Premul& to_premul(const Premul& p) { return p; }
 
@@ -232,7 +242,10 @@ class ShadedSpanPainter final : public SpanSink {
         for (int i = 0; i < s.len; i += kChunk) {
             const int n = std::min(kChunk, s.len - i);
             shader_.shade(s.x + i, s.y, n, colors_);
-            for (int k = 0; k < n; ++k) blend_over(d[i + k], colors_[k], s.at(i + k));
+            if (s.coverage)
+                blend_shaded_over(d + i, n, colors_, s.coverage + i);
+            else
+                blend_shaded_over(d + i, n, colors_, s.solid);
         }
     }
 

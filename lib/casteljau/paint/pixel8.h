@@ -123,31 +123,78 @@ struct Constant {
 #endif
 };
 
-// blend_over of `s` onto d[0, n) through `coverage`: the same bits as the
-// loop of blend_over, four pixels at a time (one 16-byte load and store, the
-// coverage-dependent factors computed for four at once).
-template <class Coverage>
-void blend_run(Premul8* d, int n, const Premul& s, Coverage coverage) {
+/// One source color for the whole run, as blend_run reads it.
+struct OneColor {
+    /// Every pixel's source is `c`.
+    explicit OneColor(const Premul& c) : s(c) {}
+    Premul s; ///< every pixel's source
+    /// Pixel i's source.
+    const Premul& at(int) const { return s; }
+#if defined(__SSE2__)
+    /// Pixel i + J's source as four lanes (the same for every pixel).
+    template <int J>
+    __m128 color(int) const {
+        return src;
+    }
+    /// Pixels i to i + 3's source alpha.
+    __m128 four_alpha(int) const { return alpha; }
+    __m128 src = _mm_setr_ps(s.r, s.g, s.b, s.a); ///< the source's lanes, made once
+    __m128 alpha = _mm_set1_ps(s.a);              ///< its alpha in every lane
+#endif
+};
+/// A source color per pixel (a shader's), as blend_run reads it.
+struct Colors {
+    const Premul* s; ///< the run's source colors
+    /// Pixel i's source.
+    const Premul& at(int i) const { return s[i]; }
+#if defined(__SSE2__)
+    /// Pixel i + J's source as four lanes.
+    template <int J>
+    __m128 color(int i) const {
+        return _mm_loadu_ps(&s[i + J].r);
+    }
+    /// Pixels i to i + 3's source alpha.
+    __m128 four_alpha(int i) const {
+        return _mm_setr_ps(s[i].a, s[i + 1].a, s[i + 2].a, s[i + 3].a);
+    }
+#endif
+};
+
+// blend_over of `source` onto d[0, n) through `coverage`: the same bits as
+// the loop of blend_over, four pixels at a time (one 16-byte load and
+// store, the coverage-dependent factors computed for four at once). Inlined
+// into its callers, which hoist a OneColor's lanes out of the loop.
+template <class Source, class Coverage>
+void blend_run(Premul8* d, int n, const Source& source, Coverage coverage) {
     int i = 0;
 #if defined(__SSE2__)
     const __m128i zero = _mm_setzero_si128();
-    const __m128 src = _mm_setr_ps(s.r, s.g, s.b, s.a), alpha = _mm_set1_ps(s.a);
     const __m128 one = _mm_set1_ps(1.0f), scale = _mm_set1_ps(255.0f);
     for (; i + 4 <= n; i += 4) {
         const __m128 kk = coverage.four(i);
         const __m128 k255 = _mm_mul_ps(kk, scale);
-        const __m128 inv = _mm_sub_ps(one, _mm_mul_ps(kk, alpha));
+        const __m128 inv = _mm_sub_ps(one, _mm_mul_ps(kk, source.four_alpha(i)));
         const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(d + i));
         const __m128i lo = _mm_unpacklo_epi8(bytes, zero), hi = _mm_unpackhi_epi8(bytes, zero);
-        const __m128i q0 = blend_lane<0>(src, k255, inv, _mm_unpacklo_epi16(lo, zero));
-        const __m128i q1 = blend_lane<1>(src, k255, inv, _mm_unpackhi_epi16(lo, zero));
-        const __m128i q2 = blend_lane<2>(src, k255, inv, _mm_unpacklo_epi16(hi, zero));
-        const __m128i q3 = blend_lane<3>(src, k255, inv, _mm_unpackhi_epi16(hi, zero));
+        const __m128i q0 =
+            blend_lane<0>(source.template color<0>(i), k255, inv, _mm_unpacklo_epi16(lo, zero));
+        const __m128i q1 =
+            blend_lane<1>(source.template color<1>(i), k255, inv, _mm_unpackhi_epi16(lo, zero));
+        const __m128i q2 =
+            blend_lane<2>(source.template color<2>(i), k255, inv, _mm_unpacklo_epi16(hi, zero));
+        const __m128i q3 =
+            blend_lane<3>(source.template color<3>(i), k255, inv, _mm_unpackhi_epi16(hi, zero));
         const __m128i packed = _mm_packus_epi16(_mm_packs_epi32(q0, q1), _mm_packs_epi32(q2, q3));
         _mm_storeu_si128(reinterpret_cast<__m128i*>(d + i), packed);
     }
 #endif
-    for (; i < n; ++i) blend_over(d[i], s, coverage.at(i));
+    for (; i < n; ++i) blend_over(d[i], source.at(i), coverage.at(i));
+}
+
+// blend_run of one color.
+template <class Coverage>
+void blend_run(Premul8* d, int n, const Premul& s, Coverage coverage) {
+    blend_run(d, n, OneColor{s}, coverage);
 }
 } // namespace detail
 
@@ -176,6 +223,17 @@ inline void blend_span_over(Premul8* d, int n, const Premul& s, float k) {
         detail::blend_run_avx2(d, n, s, k);
     else
         detail::blend_run(d, n, s, detail::Constant{k});
+}
+
+/// blend_over of shaded colors s[i] onto d[0, n), pixel i through coverage
+/// k[i] (ShadedSpanPainter's run).
+inline void blend_shaded_over(Premul8* d, int n, const Premul* s, const float* k) {
+    detail::blend_run(d, n, detail::Colors{s}, detail::PerPixel{k});
+}
+
+/// blend_over of shaded colors s[i] onto d[0, n), every pixel through coverage k.
+inline void blend_shaded_over(Premul8* d, int n, const Premul* s, float k) {
+    detail::blend_run(d, n, detail::Colors{s}, detail::Constant{k});
 }
 
 } // namespace casteljau
