@@ -150,12 +150,15 @@ TEST(Pixel8, Avx2RunsBlendAsPixelByPixel) {
 }
 
 // The same for shaded runs (a color per pixel, ShadedSpanPainter's), with
-// per-pixel and constant coverage: the four-pixel body reads each pixel's
-// own color and alpha.
-TEST(Pixel8, ShadedRunsBlendAsPixelByPixel) {
+// per-pixel and constant coverage: the four- and eight-pixel bodies read each
+// pixel's own color and alpha. The form blend_shaded_over chooses, the SSE2
+// form and the AVX2 one (where the CPU has it).
+using ShadedRun = void (*)(Premul8*, int, const Premul*, const float* k, float solid);
+
+void expect_shaded_runs_blend_as_pixel_by_pixel(ShadedRun run, const char* name) {
     testing::Rng rng(85);
     for (int trial = 0; trial < 3000; ++trial) {
-        const int n = rng.integer(0, 21);
+        const int n = rng.integer(0, 40);
         std::vector<Premul8> start(std::size_t(n) + 1);
         std::vector<Premul> colors(std::size_t(n) + 1);
         std::vector<float> k(std::size_t(n) + 1);
@@ -170,16 +173,44 @@ TEST(Pixel8, ShadedRunsBlendAsPixelByPixel) {
             for (int i = 0; i < n; ++i)
                 blend_over(want[std::size_t(i)], colors[std::size_t(i)],
                            per_pixel ? k[std::size_t(i)] : k[0]);
-            if (per_pixel)
-                blend_shaded_over(got.data(), n, colors.data(), k.data());
-            else
-                blend_shaded_over(got.data(), n, colors.data(), k[0]);
+            run(got.data(), n, colors.data(), per_pixel ? k.data() : nullptr, k[0]);
             for (int i = 0; i <= n; ++i)
                 ASSERT_EQ(got[std::size_t(i)], want[std::size_t(i)])
-                    << "trial " << trial << " pixel " << i << " of " << n
+                    << name << ": trial " << trial << " pixel " << i << " of " << n
                     << (per_pixel ? " per-pixel coverage" : " constant coverage");
         }
     }
+}
+
+TEST(Pixel8, ShadedRunsBlendAsPixelByPixel) {
+    expect_shaded_runs_blend_as_pixel_by_pixel(
+        [](Premul8* d, int n, const Premul* s, const float* k, float solid) {
+            if (k)
+                blend_shaded_over(d, n, s, k);
+            else
+                blend_shaded_over(d, n, s, solid);
+        },
+        "chosen");
+    expect_shaded_runs_blend_as_pixel_by_pixel(
+        [](Premul8* d, int n, const Premul* s, const float* k, float solid) {
+            if (k)
+                detail::blend_run(d, n, detail::Colors{s}, detail::PerPixel{k});
+            else
+                detail::blend_run(d, n, detail::Colors{s}, detail::Constant{solid});
+        },
+        "sse2");
+}
+
+TEST(Pixel8, Avx2ShadedRunsBlendAsPixelByPixel) {
+    if (!cpu_has_avx2()) GTEST_SKIP() << "this CPU has no AVX2";
+    expect_shaded_runs_blend_as_pixel_by_pixel(
+        [](Premul8* d, int n, const Premul* s, const float* k, float solid) {
+            if (k)
+                detail::blend_run_avx2(d, n, s, k);
+            else
+                detail::blend_run_avx2(d, n, s, solid);
+        },
+        "avx2");
 }
 
 } // namespace

@@ -205,6 +205,10 @@ namespace detail {
 void blend_run_avx2(Premul8* d, int n, const Premul& s, const float* k) noexcept;
 /// The same with one coverage k for the whole run.
 void blend_run_avx2(Premul8* d, int n, const Premul& s, float k) noexcept;
+/// The same with a source color per pixel, s[i], and per-pixel coverage.
+void blend_run_avx2(Premul8* d, int n, const Premul* s, const float* k) noexcept;
+/// The same with a source color per pixel and one coverage.
+void blend_run_avx2(Premul8* d, int n, const Premul* s, float k) noexcept;
 } // namespace detail
 
 /// blend_over of `s` onto d[0, n), pixel i through coverage k[i]. An opaque
@@ -228,12 +232,18 @@ inline void blend_span_over(Premul8* d, int n, const Premul& s, float k) {
 /// blend_over of shaded colors s[i] onto d[0, n), pixel i through coverage
 /// k[i] (ShadedSpanPainter's run).
 inline void blend_shaded_over(Premul8* d, int n, const Premul* s, const float* k) {
-    detail::blend_run(d, n, detail::Colors{s}, detail::PerPixel{k});
+    if (use_avx2 && n >= 8)
+        detail::blend_run_avx2(d, n, s, k);
+    else
+        detail::blend_run(d, n, detail::Colors{s}, detail::PerPixel{k});
 }
 
 /// blend_over of shaded colors s[i] onto d[0, n), every pixel through coverage k.
 inline void blend_shaded_over(Premul8* d, int n, const Premul* s, float k) {
-    detail::blend_run(d, n, detail::Colors{s}, detail::Constant{k});
+    if (use_avx2 && n >= 8)
+        detail::blend_run_avx2(d, n, s, k);
+    else
+        detail::blend_run(d, n, detail::Colors{s}, detail::Constant{k});
 }
 
 } // namespace casteljau
