@@ -131,10 +131,10 @@ TEST(Pixel8, RunsBlendAsPixelByPixel) {
         [](Premul8* d, int n, const Premul& s, float k) { blend_span_over(d, n, s, k); }, "chosen");
     expect_runs_blend_as_pixel_by_pixel(
         [](Premul8* d, int n, const Premul& s, const float* k) {
-            detail::blend_run(d, n, s, detail::PerPixel{k});
+            detail::blend_run(d, n, detail::OneColor{s}, detail::PerPixel{k});
         },
         [](Premul8* d, int n, const Premul& s, float k) {
-            detail::blend_run(d, n, s, detail::Constant{k});
+            detail::blend_run(d, n, detail::OneColor{s}, detail::Constant{k});
         },
         "sse2");
 }

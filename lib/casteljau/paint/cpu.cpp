@@ -4,7 +4,9 @@ namespace casteljau {
 
 bool cpu_has_avx2() noexcept {
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-    __builtin_cpu_init(); // needed where this runs before the constructors that would
+    // The CPU model is filled in by a constructor of libgcc, which may not
+    // have run yet when this runs during static initialization.
+    __builtin_cpu_init();
     return __builtin_cpu_supports("avx2");
 #else
     return false;

@@ -54,7 +54,10 @@ void fill_run_sse2(Premul8* d, int n, Premul8 c) noexcept {
 
 #if defined(CASTELJAU_X86_DISPATCH)
 [[gnu::target("avx2")]] void fill_run_avx2(Premul8* d, int n, Premul8 c) noexcept {
-    if (n < 8) return fill_run_sse2(d, n, c);
+    if (n < 8) { // no 32-byte vector fits: the head and tail stores would overrun
+        fill_run_sse2(d, n, c);
+        return;
+    }
     auto* b = reinterpret_cast<unsigned char*>(d);
     unsigned char* const end = b + std::size_t(n) * sizeof c;
     const __m256i v = _mm256_set1_epi32(int(bits(c)));

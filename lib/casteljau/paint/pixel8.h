@@ -160,13 +160,13 @@ struct Colors {
 #endif
 };
 
-// blend_over of `source` onto d[0, n) through `coverage`: the same bits as
-// the loop of blend_over, four pixels at a time (one 16-byte load and
-// store, the coverage-dependent factors computed for four at once). Inlined
-// into its callers, which hoist a OneColor's lanes out of the loop.
+// blend_over of `source` onto d[from, n) through `coverage`: the same bits
+// as the loop of blend_over, four pixels at a time (one 16-byte load and
+// store, the coverage-dependent factors computed for four at once). `from`
+// lets the eight-pixel AVX2 form finish its run here.
 template <class Source, class Coverage>
-void blend_run(Premul8* d, int n, const Source& source, Coverage coverage) {
-    int i = 0;
+void blend_run(Premul8* d, int n, const Source& source, Coverage coverage, int from = 0) {
+    int i = from;
 #if defined(__SSE2__)
     const __m128i zero = _mm_setzero_si128();
     const __m128 one = _mm_set1_ps(1.0f), scale = _mm_set1_ps(255.0f);
@@ -191,17 +191,17 @@ void blend_run(Premul8* d, int n, const Source& source, Coverage coverage) {
     for (; i < n; ++i) blend_over(d[i], source.at(i), coverage.at(i));
 }
 
-// blend_run of one color.
-template <class Coverage>
-void blend_run(Premul8* d, int n, const Premul& s, Coverage coverage) {
-    blend_run(d, n, OneColor{s}, coverage);
-}
-} // namespace detail
+// The policies of a run's arguments: one color or a color per pixel, one
+// coverage or a coverage per pixel.
+inline OneColor source_of(const Premul& s) { return OneColor{s}; }
+inline Colors source_of(const Premul* s) { return Colors{s}; }
+inline Constant coverage_of(float k) { return Constant{k}; }
+inline PerPixel coverage_of(const float* k) { return PerPixel{k}; }
 
-namespace detail {
-/// blend_run with per-pixel coverage k, eight pixels at a time (AVX2: two
-/// pixels to a register, each with the four-pixel form's arithmetic, so the
-/// same bits); only where cpu_has_avx2() (cpu.h). The tail goes to blend_run.
+/// blend_run eight pixels at a time (AVX2: two pixels to a register, each
+/// with the four-pixel form's arithmetic, so the same bits); only where
+/// cpu_has_avx2() (cpu.h). One color or a color per pixel s[i], one
+/// coverage or a coverage per pixel k[i].
 void blend_run_avx2(Premul8* d, int n, const Premul& s, const float* k) noexcept;
 /// The same with one coverage k for the whole run.
 void blend_run_avx2(Premul8* d, int n, const Premul& s, float k) noexcept;
@@ -209,41 +209,39 @@ void blend_run_avx2(Premul8* d, int n, const Premul& s, float k) noexcept;
 void blend_run_avx2(Premul8* d, int n, const Premul* s, const float* k) noexcept;
 /// The same with a source color per pixel and one coverage.
 void blend_run_avx2(Premul8* d, int n, const Premul* s, float k) noexcept;
+
+// The form this CPU runs best: runs shorter than eight pixels have no
+// eight-pixel body, and go to the four-pixel form directly.
+template <class S, class K>
+void blend_chosen(Premul8* d, int n, S s, K k) {
+    if (use_avx2 && n >= 8)
+        blend_run_avx2(d, n, s, k);
+    else
+        blend_run(d, n, source_of(s), coverage_of(k));
+}
 } // namespace detail
 
 /// blend_over of `s` onto d[0, n), pixel i through coverage k[i]. An opaque
 /// source needs no run-by-run test for full coverage: k = 1 gives inv = 0
 /// and round(255 S + 0 D) = quantize(S), the store's bits.
 inline void blend_span_over(Premul8* d, int n, const Premul& s, const float* k) {
-    if (use_avx2 && n >= 8)
-        detail::blend_run_avx2(d, n, s, k);
-    else
-        detail::blend_run(d, n, s, detail::PerPixel{k});
+    detail::blend_chosen(d, n, s, k);
 }
 
 /// blend_over of `s` onto d[0, n), every pixel through coverage k.
 inline void blend_span_over(Premul8* d, int n, const Premul& s, float k) {
-    if (use_avx2 && n >= 8)
-        detail::blend_run_avx2(d, n, s, k);
-    else
-        detail::blend_run(d, n, s, detail::Constant{k});
+    detail::blend_chosen(d, n, s, k);
 }
 
 /// blend_over of shaded colors s[i] onto d[0, n), pixel i through coverage
 /// k[i] (ShadedSpanPainter's run).
 inline void blend_shaded_over(Premul8* d, int n, const Premul* s, const float* k) {
-    if (use_avx2 && n >= 8)
-        detail::blend_run_avx2(d, n, s, k);
-    else
-        detail::blend_run(d, n, detail::Colors{s}, detail::PerPixel{k});
+    detail::blend_chosen(d, n, s, k);
 }
 
 /// blend_over of shaded colors s[i] onto d[0, n), every pixel through coverage k.
 inline void blend_shaded_over(Premul8* d, int n, const Premul* s, float k) {
-    if (use_avx2 && n >= 8)
-        detail::blend_run_avx2(d, n, s, k);
-    else
-        detail::blend_run(d, n, detail::Colors{s}, detail::Constant{k});
+    detail::blend_chosen(d, n, s, k);
 }
 
 } // namespace casteljau

@@ -5,21 +5,35 @@
 // ones, because AVX2's unpacks, shuffles and packs work within each 128-bit
 // half. Every pixel so goes through the same multiplies, add and rounding
 // as in the SSE2 form (no fused multiply-add: this file's target is AVX2
-// alone), and the bytes are the same (tests/paint/pixel8_test.cpp). Measured
-// against the SSE2 form: bench/README.md, 2026-11-29.
+// alone), and the bytes are the same (tests/paint/pixel8_test.cpp). The
+// run's last n mod 8 pixels go to the SSE2 form. Measured against it:
+// bench/README.md, 2026-11-29.
 #include "casteljau/paint/pixel8.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #include <immintrin.h>
-#include <type_traits>
 
 namespace casteljau::detail {
 
 namespace {
 
-// Pixels i to i + 7's coverage, per pixel or one for all.
-[[gnu::target("avx2")]] __m256 eight(const float* k, int i) { return _mm256_loadu_ps(k + i); }
-[[gnu::target("avx2")]] __m256 eight(float k, int) { return _mm256_set1_ps(k); }
+// The SSE2 form's policies (pixel8.h) read eight pixels at a time: the
+// coverage of pixels i to i + 7; the source of pixel i + J (low half) and
+// i + J + 4 (high half); the sources' alphas of pixels i to i + 7.
+[[gnu::target("avx2")]] __m256 eight(const PerPixel& k, int i) { return _mm256_loadu_ps(k.k + i); }
+[[gnu::target("avx2")]] __m256 eight(const Constant& k, int) { return _mm256_set1_ps(k.k); }
+template <int J>
+[[gnu::target("avx2")]] __m256 pair_color(const OneColor& s, int) {
+    return _mm256_set_m128(s.src, s.src);
+}
+template <int J>
+[[gnu::target("avx2")]] __m256 pair_color(const Colors& s, int i) {
+    return _mm256_set_m128(s.template color<J + 4>(i), s.template color<J>(i));
+}
+[[gnu::target("avx2")]] __m256 eight_alpha(const OneColor& s, int) { return _mm256_set1_ps(s.s.a); }
+[[gnu::target("avx2")]] __m256 eight_alpha(const Colors& s, int i) {
+    return _mm256_set_m128(s.four_alpha(i + 4), s.four_alpha(i));
+}
 
 // Pixel J (low half) and J + 4 (high half) of the eight: blend_lane's
 // arithmetic on both.
@@ -31,36 +45,8 @@ template <int J>
     return _mm256_cvtps_epi32(_mm256_add_ps(scaled, kept));
 }
 
-// Pixel i + J's source (low half) and i + J + 4's (high half), and the
-// eight pixels' source alphas: one color or a color per pixel.
-template <int J>
-[[gnu::target("avx2")]] __m256 pair_color(const Premul& s, int) {
-    return _mm256_setr_ps(s.r, s.g, s.b, s.a, s.r, s.g, s.b, s.a);
-}
-template <int J>
-[[gnu::target("avx2")]] __m256 pair_color(const Premul* s, int i) {
-    return _mm256_set_m128(_mm_loadu_ps(&s[i + J + 4].r), _mm_loadu_ps(&s[i + J].r));
-}
-[[gnu::target("avx2")]] __m256 eight_alpha(const Premul& s, int) { return _mm256_set1_ps(s.a); }
-[[gnu::target("avx2")]] __m256 eight_alpha(const Premul* s, int i) {
-    return _mm256_setr_ps(s[i].a, s[i + 1].a, s[i + 2].a, s[i + 3].a, s[i + 4].a, s[i + 5].a,
-                          s[i + 6].a, s[i + 7].a);
-}
-
-// The tail, to the four-pixel form.
-void blend_tail(Premul8* d, int n, const Premul& s, float k) { blend_run(d, n, s, Constant{k}); }
-void blend_tail(Premul8* d, int n, const Premul& s, const float* k) {
-    blend_run(d, n, s, PerPixel{k});
-}
-void blend_tail(Premul8* d, int n, const Premul* s, float k) {
-    blend_run(d, n, Colors{s}, Constant{k});
-}
-void blend_tail(Premul8* d, int n, const Premul* s, const float* k) {
-    blend_run(d, n, Colors{s}, PerPixel{k});
-}
-
-template <class S, class K>
-[[gnu::target("avx2")]] void blend8(Premul8* d, int n, S s, K k) noexcept {
+template <class Source, class Coverage>
+[[gnu::target("avx2")]] void blend8(Premul8* d, int n, const Source& s, Coverage k) noexcept {
     const __m256i zero = _mm256_setzero_si256();
     const __m256 one = _mm256_set1_ps(1.0f), scale = _mm256_set1_ps(255.0f);
     int i = 0;
@@ -83,54 +69,49 @@ template <class S, class K>
             _mm256_packus_epi16(_mm256_packs_epi32(q0, q1), _mm256_packs_epi32(q2, q3));
         _mm256_storeu_si256(reinterpret_cast<__m256i*>(d + i), packed);
     }
-    if constexpr (std::is_pointer_v<S>) {
-        if constexpr (std::is_pointer_v<K>)
-            blend_tail(d + i, n - i, s + i, k + i);
-        else
-            blend_tail(d + i, n - i, s + i, k);
-    } else if constexpr (std::is_pointer_v<K>) {
-        blend_tail(d + i, n - i, s, k + i);
-    } else {
-        blend_tail(d + i, n - i, s, k);
-    }
+    blend_run(d, n, s, k, i);
 }
 
 } // namespace
 
 void blend_run_avx2(Premul8* d, int n, const Premul& s, const float* k) noexcept {
-    blend8<const Premul&>(d, n, s, k);
+    blend8(d, n, source_of(s), coverage_of(k));
 }
 
 void blend_run_avx2(Premul8* d, int n, const Premul& s, float k) noexcept {
-    blend8<const Premul&>(d, n, s, k);
+    blend8(d, n, source_of(s), coverage_of(k));
 }
 
 void blend_run_avx2(Premul8* d, int n, const Premul* s, const float* k) noexcept {
-    blend8(d, n, s, k);
+    blend8(d, n, source_of(s), coverage_of(k));
 }
 
-void blend_run_avx2(Premul8* d, int n, const Premul* s, float k) noexcept { blend8(d, n, s, k); }
+void blend_run_avx2(Premul8* d, int n, const Premul* s, float k) noexcept {
+    blend8(d, n, source_of(s), coverage_of(k));
+}
 
 } // namespace casteljau::detail
 
 #else
 
+// No AVX2 here: use_avx2 is false and these are never called; defined for
+// the link, as the baseline form.
 namespace casteljau::detail {
 
 void blend_run_avx2(Premul8* d, int n, const Premul& s, const float* k) noexcept {
-    blend_run(d, n, s, PerPixel{k});
+    blend_run(d, n, source_of(s), coverage_of(k));
 }
 
 void blend_run_avx2(Premul8* d, int n, const Premul& s, float k) noexcept {
-    blend_run(d, n, s, Constant{k});
+    blend_run(d, n, source_of(s), coverage_of(k));
 }
 
 void blend_run_avx2(Premul8* d, int n, const Premul* s, const float* k) noexcept {
-    blend_run(d, n, Colors{s}, PerPixel{k});
+    blend_run(d, n, source_of(s), coverage_of(k));
 }
 
 void blend_run_avx2(Premul8* d, int n, const Premul* s, float k) noexcept {
-    blend_run(d, n, Colors{s}, Constant{k});
+    blend_run(d, n, source_of(s), coverage_of(k));
 }
 
 } // namespace casteljau::detail
