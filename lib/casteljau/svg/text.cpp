@@ -303,8 +303,11 @@ void Reader::text(const pugi::xml_node& n, const StyleState& style, const Elemen
     const TextLayout layout = layout_text(fonts(), r.content);
     if (std::any_of(layout.glyphs.begin(), layout.glyphs.end(),
                     [](const PlacedGlyph& g) { return !g.glyph.font; }))
-        warn(n, "no font draws some of this text (none installed, or none that reads); "
-                "those characters are not drawn");
+        warn(n, "no font draws some of this text (" +
+                    (text_libraries_error().empty()
+                         ? std::string("none installed, or none that reads")
+                         : "the text libraries did not load: " + text_libraries_error()) +
+                    "); those characters are not drawn");
     draw_text(r.content, layout, m, props, out);
 }
 

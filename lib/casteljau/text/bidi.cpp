@@ -4,24 +4,25 @@
 // at that level or above is reversed.
 #include "casteljau/text/bidi.h"
 
+#include "casteljau/text/detail/text_libs.h"
+
 #include <algorithm>
-#include <fribidi.h>
 
 namespace casteljau {
 
 std::vector<std::uint8_t> bidi_levels(std::u32string_view text, bool rtl) {
     const auto n = FriBidiStrIndex(text.size());
     std::vector<std::uint8_t> levels(text.size(), rtl ? 1 : 0);
-    if (n == 0) return levels;
+    if (n == 0 || !text_libs().loaded()) return levels;
     std::vector<FriBidiCharType> types(text.size());
     std::vector<FriBidiBracketType> brackets(text.size());
     std::vector<FriBidiLevel> out(text.size());
     const auto* chars = reinterpret_cast<const FriBidiChar*>(text.data());
-    fribidi_get_bidi_types(chars, n, types.data());
-    fribidi_get_bracket_types(chars, n, types.data(), brackets.data());
+    text_libs().fribidi_get_bidi_types(chars, n, types.data());
+    text_libs().fribidi_get_bracket_types(chars, n, types.data(), brackets.data());
     FriBidiParType base = rtl ? FRIBIDI_PAR_RTL : FRIBIDI_PAR_LTR;
-    if (fribidi_get_par_embedding_levels_ex(types.data(), brackets.data(), n, &base, out.data()) ==
-        0)
+    if (text_libs().fribidi_get_par_embedding_levels_ex(types.data(), brackets.data(), n, &base,
+                                                        out.data()) == 0)
         return levels; // out of memory in FriBidi: the base level
     std::copy(out.begin(), out.end(), levels.begin());
     return levels;

@@ -10,13 +10,7 @@
 #include "casteljau/text/font.h"
 
 #include "casteljau/text/detail/font_impl.h"
-
-#include <hb-ot.h>
-
-#include FT_OUTLINE_H
-#include FT_MULTIPLE_MASTERS_H
-#include FT_TRUETYPE_TABLES_H
-#include FT_ADVANCES_H
+#include "casteljau/text/detail/text_libs.h"
 
 #include <algorithm>
 #include <cmath>
@@ -26,9 +20,9 @@
 namespace casteljau {
 
 Font::Impl::~Impl() {
-    if (hb) hb_font_destroy(hb);
-    if (face) FT_Done_Face(face);
-    if (library) FT_Done_FreeType(library);
+    if (hb) text_libs().hb_font_destroy(hb);
+    if (face) text_libs().FT_Done_Face(face);
+    if (library) text_libs().FT_Done_FreeType(library);
 }
 
 Font::~Font() = default;
@@ -44,7 +38,8 @@ FT_ULong tag_of(const char t[4]) {
 // the others keep their defaults.
 void set_variations(FT_Face face, const std::vector<FontVariation>& variations) {
     FT_MM_Var* mm = nullptr;
-    if (variations.empty() || !FT_HAS_MULTIPLE_MASTERS(face) || FT_Get_MM_Var(face, &mm) != 0)
+    if (variations.empty() || !FT_HAS_MULTIPLE_MASTERS(face) ||
+        text_libs().FT_Get_MM_Var(face, &mm) != 0)
         return;
     std::vector<FT_Fixed> coords(mm->num_axis);
     for (FT_UInt i = 0; i < mm->num_axis; ++i) {
@@ -55,8 +50,8 @@ void set_variations(FT_Face face, const std::vector<FontVariation>& variations) 
                 coords[i] = std::clamp(FT_Fixed(std::lround(v.value * 65536.0)), axis.minimum,
                                        axis.maximum);
     }
-    FT_Set_Var_Design_Coordinates(face, mm->num_axis, coords.data());
-    FT_Done_MM_Var(face->glyph->library, mm);
+    text_libs().FT_Set_Var_Design_Coordinates(face, mm->num_axis, coords.data());
+    text_libs().FT_Done_MM_Var(face->glyph->library, mm);
 }
 
 FontMetrics metrics_of(FT_Face face) {
@@ -71,11 +66,12 @@ FontMetrics metrics_of(FT_Face face) {
     // proportions of the em.
     m.x_height = m.units_per_em / 2;
     m.cap_height = m.units_per_em * 0.7;
-    const auto* os2 = static_cast<const TT_OS2*>(FT_Get_Sfnt_Table(face, FT_SFNT_OS2));
+    const auto* os2 = static_cast<const TT_OS2*>(text_libs().FT_Get_Sfnt_Table(face, FT_SFNT_OS2));
     if (os2 && os2->version == 0xFFFF) os2 = nullptr; // FreeType's mark of a missing table
     const auto top_of = [&](char32_t c, double& out) {
-        const FT_UInt g = FT_Get_Char_Index(face, c);
-        if (g != 0 && FT_Load_Glyph(face, g, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING) == 0 &&
+        const FT_UInt g = text_libs().FT_Get_Char_Index(face, c);
+        if (g != 0 &&
+            text_libs().FT_Load_Glyph(face, g, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING) == 0 &&
             face->glyph->metrics.horiBearingY > 0)
             out = double(face->glyph->metrics.horiBearingY);
     };
@@ -127,7 +123,7 @@ Path path_of(FT_Outline& outline) {
     static const FT_Outline_Funcs funcs = {
         Decomposer::move, Decomposer::line, Decomposer::conic, Decomposer::cubic, 1, 0};
     Path contours;
-    if (FT_Outline_Decompose(&outline, &funcs, &contours) != 0) return {};
+    if (text_libs().FT_Outline_Decompose(&outline, &funcs, &contours) != 0) return {};
     Path closed;
     for (Subpath sp : contours.subpaths()) {
         sp.closed = true;
@@ -139,7 +135,8 @@ Path path_of(FT_Outline& outline) {
 // Starts FreeType and opens the face with `open`; the reason it failed, or null.
 template <class Open>
 const char* open_face(Font::Impl& impl, Open open) {
-    if (FT_Init_FreeType(&impl.library) != 0) return "FreeType does not start";
+    if (!text_libs().loaded()) return text_libs().error.c_str();
+    if (text_libs().FT_Init_FreeType(&impl.library) != 0) return "FreeType does not start";
     if (open() != 0) return "not a font FreeType reads";
     if (!FT_IS_SCALABLE(impl.face)) return "a bitmap font, without outlines";
     return nullptr;
@@ -152,14 +149,15 @@ std::shared_ptr<Font> Font::load(const std::string& file, int index,
     std::shared_ptr<Font> font(new Font);
     font->impl_ = std::make_unique<Impl>();
     Impl& impl = *font->impl_;
-    if (const char* what = open_face(
-            impl, [&] { return FT_New_Face(impl.library, file.c_str(), index, &impl.face); })) {
+    if (const char* what = open_face(impl, [&] {
+            return text_libs().FT_New_Face(impl.library, file.c_str(), index, &impl.face);
+        })) {
         if (error) *error = file + ": " + what;
         return nullptr;
     }
-    hb_blob_t* blob = hb_blob_create_from_file(file.c_str());
-    hb_face_t* tables = hb_face_create(blob, unsigned(index));
-    hb_blob_destroy(blob);
+    hb_blob_t* blob = text_libs().hb_blob_create_from_file(file.c_str());
+    hb_face_t* tables = text_libs().hb_face_create(blob, unsigned(index));
+    text_libs().hb_blob_destroy(blob);
     return finish(std::move(font), variations, tables);
 }
 
@@ -171,8 +169,8 @@ std::shared_ptr<Font> Font::load(std::shared_ptr<const std::vector<unsigned char
     Impl& impl = *font->impl_;
     impl.data = std::move(data);
     if (const char* what = open_face(impl, [&] {
-            return FT_New_Memory_Face(impl.library, impl.data->data(), FT_Long(impl.data->size()),
-                                      index, &impl.face);
+            return text_libs().FT_New_Memory_Face(impl.library, impl.data->data(),
+                                                  FT_Long(impl.data->size()), index, &impl.face);
         })) {
         if (error) *error = name + ": " + what;
         return nullptr;
@@ -181,22 +179,23 @@ std::shared_ptr<Font> Font::load(std::shared_ptr<const std::vector<unsigned char
     // the tables are taken from FreeType, which decompressed them, each
     // copied once now (HarfBuzz would otherwise ask FreeType for them
     // lazily, from the shaping thread, while another reads outlines).
-    hb_face_t* tables = hb_face_builder_create();
+    hb_face_t* tables = text_libs().hb_face_builder_create();
     FT_ULong tag = 0, length = 0;
-    for (FT_UInt i = 0; FT_Sfnt_Table_Info(impl.face, i, &tag, &length) == 0; ++i) {
+    for (FT_UInt i = 0; text_libs().FT_Sfnt_Table_Info(impl.face, i, &tag, &length) == 0; ++i) {
         std::vector<FT_Byte> bytes(length);
-        if (length == 0 || FT_Load_Sfnt_Table(impl.face, tag, 0, bytes.data(), &length) != 0)
+        if (length == 0 ||
+            text_libs().FT_Load_Sfnt_Table(impl.face, tag, 0, bytes.data(), &length) != 0)
             continue;
-        hb_blob_t* blob =
-            hb_blob_create(reinterpret_cast<const char*>(bytes.data()), unsigned(length),
-                           HB_MEMORY_MODE_DUPLICATE, nullptr, nullptr);
-        hb_face_builder_add_table(tables, hb_tag_t(tag), blob);
-        hb_blob_destroy(blob);
+        hb_blob_t* blob = text_libs().hb_blob_create(reinterpret_cast<const char*>(bytes.data()),
+                                                     unsigned(length), HB_MEMORY_MODE_DUPLICATE,
+                                                     nullptr, nullptr);
+        text_libs().hb_face_builder_add_table(tables, hb_tag_t(tag), blob);
+        text_libs().hb_blob_destroy(blob);
     }
-    hb_blob_t* built = hb_face_reference_blob(tables);
-    hb_face_destroy(tables);
-    tables = hb_face_create(built, 0);
-    hb_blob_destroy(built);
+    hb_blob_t* built = text_libs().hb_face_reference_blob(tables);
+    text_libs().hb_face_destroy(tables);
+    tables = text_libs().hb_face_create(built, 0);
+    text_libs().hb_blob_destroy(built);
     return finish(std::move(font), variations, tables);
 }
 
@@ -205,23 +204,25 @@ std::shared_ptr<Font> Font::finish(std::shared_ptr<Font> font,
                                    hb_face_t* tables) {
     Impl& impl = *font->impl_;
     set_variations(impl.face, variations);
-    impl.hb = hb_font_create(tables);
-    hb_face_destroy(tables);
-    hb_ot_font_set_funcs(impl.hb);
+    impl.hb = text_libs().hb_font_create(tables);
+    text_libs().hb_face_destroy(tables);
+    text_libs().hb_ot_font_set_funcs(impl.hb);
     // Shaping in font units: HarfBuzz's positions are then exact, unhinted.
-    hb_font_set_scale(impl.hb, int(impl.face->units_per_EM), int(impl.face->units_per_EM));
+    text_libs().hb_font_set_scale(impl.hb, int(impl.face->units_per_EM),
+                                  int(impl.face->units_per_EM));
     std::vector<hb_variation_t> hb_variations;
     for (const FontVariation& v : variations)
         if (std::isfinite(v.value))
             hb_variations.push_back({hb_tag_t(tag_of(v.tag)), float(v.value)});
-    hb_font_set_variations(impl.hb, hb_variations.data(), unsigned(hb_variations.size()));
+    text_libs().hb_font_set_variations(impl.hb, hb_variations.data(),
+                                       unsigned(hb_variations.size()));
     font->metrics_ = metrics_of(impl.face);
     font->family_ = impl.face->family_name ? impl.face->family_name : "";
     font->glyph_count_ = std::size_t(std::max<FT_Long>(impl.face->num_glyphs, 0));
     FT_MM_Var* mm = nullptr;
-    if (FT_HAS_MULTIPLE_MASTERS(impl.face) && FT_Get_MM_Var(impl.face, &mm) == 0) {
+    if (FT_HAS_MULTIPLE_MASTERS(impl.face) && text_libs().FT_Get_MM_Var(impl.face, &mm) == 0) {
         for (FT_UInt i = 0; i < mm->num_axis; ++i) font->axes_.push_back(mm->axis[i].tag);
-        FT_Done_MM_Var(impl.library, mm);
+        text_libs().FT_Done_MM_Var(impl.library, mm);
     }
     return font;
 }
@@ -232,7 +233,7 @@ bool Font::has_axis(const char tag[4]) const {
 
 std::uint32_t Font::glyph_index(char32_t c) const {
     std::lock_guard lock(mutex_);
-    return FT_Get_Char_Index(impl_->face, FT_ULong(c));
+    return text_libs().FT_Get_Char_Index(impl_->face, FT_ULong(c));
 }
 
 // The outline's point count is bounded by its type (Font::kMaxOutlinePoints).
@@ -245,8 +246,8 @@ const Path& Font::outline(std::uint32_t glyph) const {
     Path& path = outlines_[glyph];
     FT_Face face = impl_->face;
     if (glyph < glyph_count_ &&
-        FT_Load_Glyph(face, glyph, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP) ==
-            0 &&
+        text_libs().FT_Load_Glyph(face, glyph,
+                                  FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP) == 0 &&
         face->glyph->format == FT_GLYPH_FORMAT_OUTLINE)
         path = path_of(face->glyph->outline);
     return path;
@@ -255,17 +256,18 @@ const Path& Font::outline(std::uint32_t glyph) const {
 double Font::advance(std::uint32_t glyph) const {
     std::lock_guard lock(mutex_);
     FT_Fixed a = 0;
-    if (FT_Get_Advance(impl_->face, glyph, FT_LOAD_NO_SCALE, &a) != 0) return 0;
+    if (text_libs().FT_Get_Advance(impl_->face, glyph, FT_LOAD_NO_SCALE, &a) != 0) return 0;
     return double(a);
 }
 
 double Font::vertical_advance(std::uint32_t glyph) const {
-    return -double(hb_font_get_glyph_v_advance(impl_->hb, glyph)); // HarfBuzz's is y up: negative
+    return -double(
+        text_libs().hb_font_get_glyph_v_advance(impl_->hb, glyph)); // HarfBuzz's is y up: negative
 }
 
 Vec2 Font::vertical_origin(std::uint32_t glyph) const {
     hb_position_t x = 0, y = 0;
-    hb_font_get_glyph_v_origin(impl_->hb, glyph, &x, &y);
+    text_libs().hb_font_get_glyph_v_origin(impl_->hb, glyph, &x, &y);
     return {double(x), double(y)};
 }
 

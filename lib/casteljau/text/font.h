@@ -28,6 +28,11 @@ namespace casteljau {
 
 struct FontFace;
 
+/// Why no font can be read or matched: FreeType, HarfBuzz, fontconfig or
+/// FriBidi could not be loaded (they are opened on first use, not linked);
+/// empty when they are there. The first call loads them.
+const std::string& text_libraries_error();
+
 /// A design axis setting: a four-letter tag and a value.
 struct FontVariation {
     char tag[4] = {' ', ' ', ' ', ' '};

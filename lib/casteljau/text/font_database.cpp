@@ -17,10 +17,10 @@
 #include "casteljau/text/font_database.h"
 
 #include "casteljau/text/detail/document_fonts.h"
+#include "casteljau/text/detail/text_libs.h"
 
 #include <cctype>
 #include <filesystem>
-#include <fontconfig/fontconfig.h>
 #include <map>
 #include <tuple>
 
@@ -53,15 +53,15 @@ struct FontDatabase::Impl {
         matches.clear();
         generic_of.clear();
         for (auto& [k, p] : best)
-            if (p) FcPatternDestroy(p);
+            if (p) text_libs().FcPatternDestroy(p);
         for (auto& [k, set] : sorted)
-            if (set) FcFontSetDestroy(set);
+            if (set) text_libs().FcFontSetDestroy(set);
         best.clear();
         sorted.clear();
     }
     ~Impl() {
         forget();
-        if (config) FcConfigDestroy(config);
+        if (config) text_libs().FcConfigDestroy(config);
     }
 };
 
@@ -76,42 +76,44 @@ bool generic(const std::string& family) {
 
 bool has_family(FcPattern* p, const std::string& family) {
     FcChar8* name = nullptr;
-    for (int i = 0; FcPatternGetString(p, FC_FAMILY, i, &name) == FcResultMatch; ++i)
+    for (int i = 0; text_libs().FcPatternGetString(p, FC_FAMILY, i, &name) == FcResultMatch; ++i)
         if (same_family_name(reinterpret_cast<const char*>(name), family)) return true;
     return false;
 }
 
 bool has_char(FcPattern* p, char32_t c) {
     FcCharSet* cs = nullptr;
-    return FcPatternGetCharSet(p, FC_CHARSET, 0, &cs) == FcResultMatch && FcCharSetHasChar(cs, c);
+    return text_libs().FcPatternGetCharSet(p, FC_CHARSET, 0, &cs) == FcResultMatch &&
+           text_libs().FcCharSetHasChar(cs, c);
 }
 
 std::optional<FontFace> face_of(FcPattern* p) {
     FcChar8* file = nullptr;
     int index = 0;
-    if (FcPatternGetString(p, FC_FILE, 0, &file) != FcResultMatch) return std::nullopt;
-    FcPatternGetInteger(p, FC_INDEX, 0, &index);
+    if (text_libs().FcPatternGetString(p, FC_FILE, 0, &file) != FcResultMatch) return std::nullopt;
+    text_libs().FcPatternGetInteger(p, FC_INDEX, 0, &index);
     return FontFace{reinterpret_cast<const char*>(file), index, nullptr};
 }
 
 // The pattern of one family of a query, with fontconfig's substitutions.
 FcPattern* pattern_of(FcConfig* config, const std::string& family, const FontQuery& q) {
-    FcPattern* p = FcPatternCreate();
+    FcPattern* p = text_libs().FcPatternCreate();
     // system-ui has no fontconfig alias on most systems: its closest is sans-serif.
     const std::string name = family == "system-ui" || family == "ui-sans-serif" ? "sans-serif"
                              : family == "ui-serif"                             ? "serif"
                              : family == "ui-monospace"                         ? "monospace"
                                                                                 : family;
-    FcPatternAddString(p, FC_FAMILY, reinterpret_cast<const FcChar8*>(name.c_str()));
-    FcPatternAddDouble(p, FC_WEIGHT, FcWeightFromOpenTypeDouble(q.weight));
-    FcPatternAddInteger(p, FC_SLANT,
-                        q.style == FontStyle::Italic    ? FC_SLANT_ITALIC
-                        : q.style == FontStyle::Oblique ? FC_SLANT_OBLIQUE
-                                                        : FC_SLANT_ROMAN);
-    FcPatternAddInteger(p, FC_WIDTH, q.stretch); // fontconfig's widths are CSS's percentages
-    FcPatternAddBool(p, FC_OUTLINE, FcTrue);
-    FcConfigSubstitute(config, p, FcMatchPattern);
-    FcDefaultSubstitute(p);
+    text_libs().FcPatternAddString(p, FC_FAMILY, reinterpret_cast<const FcChar8*>(name.c_str()));
+    text_libs().FcPatternAddDouble(p, FC_WEIGHT, text_libs().FcWeightFromOpenTypeDouble(q.weight));
+    text_libs().FcPatternAddInteger(p, FC_SLANT,
+                                    q.style == FontStyle::Italic    ? FC_SLANT_ITALIC
+                                    : q.style == FontStyle::Oblique ? FC_SLANT_OBLIQUE
+                                                                    : FC_SLANT_ROMAN);
+    text_libs().FcPatternAddInteger(p, FC_WIDTH,
+                                    q.stretch); // fontconfig's widths are CSS's percentages
+    text_libs().FcPatternAddBool(p, FC_OUTLINE, FcTrue);
+    text_libs().FcConfigSubstitute(config, p, FcMatchPattern);
+    text_libs().FcDefaultSubstitute(p);
     return p;
 }
 
@@ -131,8 +133,8 @@ FcPattern* FontDatabase::Impl::best_of(const std::string& family, const FontQuer
     if (const auto it = best.find(key); it != best.end()) return it->second;
     FcPattern* p = pattern_of(config, family, q);
     FcResult result;
-    FcPattern* m = FcFontMatch(config, p, &result);
-    FcPatternDestroy(p);
+    FcPattern* m = text_libs().FcFontMatch(config, p, &result);
+    text_libs().FcPatternDestroy(p);
     return best[key] = m;
 }
 
@@ -141,8 +143,8 @@ FcFontSet* FontDatabase::Impl::sorted_of(const std::string& family, const FontQu
     if (const auto it = sorted.find(key); it != sorted.end()) return it->second;
     FcPattern* p = pattern_of(config, family, q);
     FcResult result;
-    FcFontSet* set = FcFontSort(config, p, FcFalse, nullptr, &result);
-    FcPatternDestroy(p);
+    FcFontSet* set = text_libs().FcFontSort(config, p, FcFalse, nullptr, &result);
+    text_libs().FcPatternDestroy(p);
     return sorted[key] = set;
 }
 
@@ -152,15 +154,17 @@ FcFontSet* FontDatabase::Impl::sorted_of(const std::string& family, const FontQu
 const std::string& FontDatabase::Impl::implied_generic(const std::string& family) {
     if (const auto it = generic_of.find(family); it != generic_of.end()) return it->second;
     const auto first_generic = [&](const std::string& name) {
-        FcPattern* p = FcPatternCreate();
-        FcPatternAddString(p, FC_FAMILY, reinterpret_cast<const FcChar8*>(name.c_str()));
-        FcConfigSubstitute(config, p, FcMatchPattern);
+        FcPattern* p = text_libs().FcPatternCreate();
+        text_libs().FcPatternAddString(p, FC_FAMILY,
+                                       reinterpret_cast<const FcChar8*>(name.c_str()));
+        text_libs().FcConfigSubstitute(config, p, FcMatchPattern);
         std::string found;
         FcChar8* f = nullptr;
-        for (int i = 1; found.empty() && FcPatternGetString(p, FC_FAMILY, i, &f) == FcResultMatch;
+        for (int i = 1;
+             found.empty() && text_libs().FcPatternGetString(p, FC_FAMILY, i, &f) == FcResultMatch;
              ++i)
             if (generic(reinterpret_cast<const char*>(f))) found = reinterpret_cast<const char*>(f);
-        FcPatternDestroy(p);
+        text_libs().FcPatternDestroy(p);
         return found;
     };
     std::string g = generic(family) ? "" : first_generic(family);
@@ -193,12 +197,14 @@ std::optional<FontFace> FontDatabase::Impl::closest(const std::string& family, c
 FontDatabase::FontDatabase() : FontDatabase(true) {}
 
 FontDatabase::FontDatabase(bool system_config) : impl_(std::make_unique<Impl>()) {
-    FcInit();
-    impl_->config = system_config ? FcInitLoadConfigAndFonts() : FcConfigCreate();
+    if (!text_libs().loaded()) return; // no configuration: no font matches
+    text_libs().FcInit();
+    impl_->config =
+        system_config ? text_libs().FcInitLoadConfigAndFonts() : text_libs().FcConfigCreate();
     // An empty configuration still needs a cache folder, or fontconfig
     // complains of each folder added (and rescans it every time).
     if (!system_config)
-        FcConfigParseAndLoadFromMemory(
+        text_libs().FcConfigParseAndLoadFromMemory(
             impl_->config,
             reinterpret_cast<const FcChar8*>(
                 "<fontconfig><cachedir prefix=\"xdg\">fontconfig</cachedir></fontconfig>"),
@@ -249,14 +255,16 @@ bool FontDatabase::add_font_dir(const std::string& dir) {
     if (!std::filesystem::is_directory(dir, e)) return false; // fontconfig would say yes
     std::lock_guard lock(mutex_);
     impl_->forget();
-    return FcConfigAppFontAddDir(impl_->config, reinterpret_cast<const FcChar8*>(dir.c_str()));
+    return text_libs().FcConfigAppFontAddDir(impl_->config,
+                                             reinterpret_cast<const FcChar8*>(dir.c_str()));
 }
 
 bool FontDatabase::add_font_file(const std::string& file) {
     if (!impl_->config) return false;
     std::lock_guard lock(mutex_);
     impl_->forget();
-    return FcConfigAppFontAddFile(impl_->config, reinterpret_cast<const FcChar8*>(file.c_str()));
+    return text_libs().FcConfigAppFontAddFile(impl_->config,
+                                              reinterpret_cast<const FcChar8*>(file.c_str()));
 }
 
 void FontDatabase::set_default_family(std::string family) {
@@ -278,6 +286,7 @@ std::optional<FontFace> FontDatabase::find_family(const std::string& family, con
         if (const Layer::Entry* e = layer_->best(family, q, c)) return e->face;
         return parent_->find_family(family, q, c);
     }
+    if (!impl_->config) return std::nullopt; // the text libraries did not load
     return impl_->match_family(family, q, c);
 }
 
@@ -295,6 +304,7 @@ std::optional<FontFace> FontDatabase::find(const FontQuery& q, std::optional<cha
         impl_->matches.emplace(key, face);
         return face;
     }
+    if (!impl_->config) return std::nullopt; // the text libraries did not load
     for (const std::string& family : q.families)
         if ((face = impl_->match_family(family, q, c))) break;
     for (const std::string& family : q.families) {

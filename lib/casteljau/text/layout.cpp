@@ -2,10 +2,10 @@
 #include "casteljau/text/layout.h"
 
 #include "casteljau/text/bidi.h"
+#include "casteljau/text/detail/text_libs.h"
 #include "casteljau/text/utf8.h"
 
 #include <algorithm>
-#include <hb.h>
 #include <map>
 
 namespace casteljau {
@@ -13,8 +13,9 @@ namespace casteljau {
 namespace {
 
 bool is_mark(char32_t c) {
+    if (!text_libs().loaded()) return false;
     const hb_unicode_general_category_t cat =
-        hb_unicode_general_category(hb_unicode_funcs_get_default(), c);
+        text_libs().hb_unicode_general_category(text_libs().hb_unicode_funcs_get_default(), c);
     return cat == HB_UNICODE_GENERAL_CATEGORY_NON_SPACING_MARK ||
            cat == HB_UNICODE_GENERAL_CATEGORY_SPACING_MARK ||
            cat == HB_UNICODE_GENERAL_CATEGORY_ENCLOSING_MARK;
