@@ -297,6 +297,38 @@ TEST(ImageShader, RowsShadeAsTheFormulasSay) {
         }
 }
 
+// Translations by whole pixels copy rows (whole stretches of the image's
+// row, tiled or padded): against the pixel each device pixel lies on, at
+// opacity 1 (a plain copy) and below it, on rows that start left of, inside
+// and right of the image and wrap around it several times.
+TEST(ImageShader, CopiedRowsArePixelByPixelTheImagesPixels) {
+    const RasterImage im = random_image(7, 3, 31);
+    testing::Rng rng(37);
+    for (const float opacity : {1.0f, 0.6f})
+        for (const bool repeat : {false, true})
+            for (int trial = 0; trial < 200; ++trial) {
+                const int tx = rng.integer(-30, 30), ty = rng.integer(-5, 5);
+                ImageShader sh;
+                ASSERT_TRUE(sh.prepare(im, Affine::translate({double(tx), double(ty)}), opacity,
+                                       true, repeat));
+                const int x = rng.integer(-40, 40), y = rng.integer(-6, 6);
+                const int n = rng.integer(1, 40);
+                std::vector<Premul> row(static_cast<std::size_t>(n));
+                sh.shade(x, y, n, row.data());
+                const auto index = [&](int k, int size) {
+                    return repeat ? ((k % size) + size) % size : std::clamp(k, 0, size - 1);
+                };
+                for (int i = 0; i < n; ++i) {
+                    const Premul p = im.at(index(x + i - tx, im.width), index(y - ty, im.height));
+                    const Premul want{p.r * opacity, p.g * opacity, p.b * opacity, p.a * opacity};
+                    EXPECT_TRUE(same(row[std::size_t(i)], want))
+                        << (repeat ? "repeat" : "pad") << " opacity " << opacity << " translate "
+                        << where(tx, ty) << " row " << where(x, y) << " n " << n << " pixel " << i
+                        << ": " << str(row[std::size_t(i)]) << " want " << str(want);
+                }
+            }
+}
+
 TEST(ImageShader, TabulatedColumnsShadeTheSameBits) {
     // A map that keeps rows level and columns upright: each column's
     // horizontal half of the sample, tabulated once, gives every row exactly
