@@ -72,8 +72,20 @@ TEST(ImageWrite, RoundTripsPngAndExrAndLeavesNoTemporaryFile) {
         EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
 }
 
+// The file with the time OpenImageIO stamps into an EXR header (capDate,
+// "YYYY:MM:DD hh:mm:ss", the moment it is written) blanked: two writes a
+// second apart differ there only (regression: failed under the sanitizers,
+// whose writes straddled a second).
+std::string without_capture_date(std::string file) {
+    const std::string key("capDate\0string\0\x13\0\0\0", 19);
+    if (const auto at = file.find(key); at != std::string::npos)
+        file.replace(at + key.size(), 19, 19, '-');
+    return file;
+}
+
 // A Canvas8 is written as the float canvas holding the same values: the
-// same file, byte for byte, in an 8-bit and a float format.
+// same file, byte for byte (but for the time of writing), in an 8-bit and a
+// float format.
 TEST(ImageWrite, ACanvas8WritesAsTheFloatCanvasOfItsValues) {
     TempDir dir;
     const int w = 23, h = 7;
@@ -96,7 +108,7 @@ TEST(ImageWrite, ACanvas8WritesAsTheFloatCanvasOfItsValues) {
         const std::string ca{std::istreambuf_iterator<char>(fa), {}};
         const std::string cb{std::istreambuf_iterator<char>(fb), {}};
         EXPECT_FALSE(ca.empty()) << ext;
-        EXPECT_EQ(ca, cb) << ext;
+        EXPECT_TRUE(without_capture_date(ca) == without_capture_date(cb)) << ext;
     }
 }
 
