@@ -200,15 +200,11 @@ inline PerPixel coverage_of(const float* k) { return PerPixel{k}; }
 
 /// blend_run eight pixels at a time (AVX2: two pixels to a register, each
 /// with the four-pixel form's arithmetic, so the same bits); only where
-/// cpu_has_avx2() (cpu.h). One color or a color per pixel s[i], one
-/// coverage or a coverage per pixel k[i].
-void blend_run_avx2(Premul8* d, int n, const Premul& s, const float* k) noexcept;
-/// The same with one coverage k for the whole run.
-void blend_run_avx2(Premul8* d, int n, const Premul& s, float k) noexcept;
-/// The same with a source color per pixel, s[i], and per-pixel coverage.
-void blend_run_avx2(Premul8* d, int n, const Premul* s, const float* k) noexcept;
-/// The same with a source color per pixel and one coverage.
-void blend_run_avx2(Premul8* d, int n, const Premul* s, float k) noexcept;
+/// cpu_has_avx2() (cpu.h). S is one color (Premul) or a color per pixel
+/// (const Premul*), K one coverage (float) or one per pixel (const float*):
+/// those four are instantiated in pixel8_avx2.cpp.
+template <class S, class K>
+void blend_run_avx2(Premul8* d, int n, S s, K k) noexcept;
 
 // The form this CPU runs best: runs shorter than eight pixels have no
 // eight-pixel body, and go to the four-pixel form directly.

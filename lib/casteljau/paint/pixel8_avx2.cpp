@@ -74,46 +74,26 @@ template <class Source, class Coverage>
 
 } // namespace
 
-void blend_run_avx2(Premul8* d, int n, const Premul& s, const float* k) noexcept {
-    blend8(d, n, source_of(s), coverage_of(k));
-}
-
-void blend_run_avx2(Premul8* d, int n, const Premul& s, float k) noexcept {
-    blend8(d, n, source_of(s), coverage_of(k));
-}
-
-void blend_run_avx2(Premul8* d, int n, const Premul* s, const float* k) noexcept {
-    blend8(d, n, source_of(s), coverage_of(k));
-}
-
-void blend_run_avx2(Premul8* d, int n, const Premul* s, float k) noexcept {
-    blend8(d, n, source_of(s), coverage_of(k));
-}
-
-} // namespace casteljau::detail
-
-#else
-
-// No AVX2 here: use_avx2 is false and these are never called; defined for
-// the link, as the baseline form.
-namespace casteljau::detail {
-
-void blend_run_avx2(Premul8* d, int n, const Premul& s, const float* k) noexcept {
-    blend_run(d, n, source_of(s), coverage_of(k));
-}
-
-void blend_run_avx2(Premul8* d, int n, const Premul& s, float k) noexcept {
-    blend_run(d, n, source_of(s), coverage_of(k));
-}
-
-void blend_run_avx2(Premul8* d, int n, const Premul* s, const float* k) noexcept {
-    blend_run(d, n, source_of(s), coverage_of(k));
-}
-
-void blend_run_avx2(Premul8* d, int n, const Premul* s, float k) noexcept {
-    blend_run(d, n, source_of(s), coverage_of(k));
-}
-
 } // namespace casteljau::detail
 
 #endif
+
+namespace casteljau::detail {
+
+template <class S, class K>
+void blend_run_avx2(Premul8* d, int n, S s, K k) noexcept {
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+    blend8(d, n, source_of(s), coverage_of(k));
+#else
+    // No AVX2 here: use_avx2 is false and this is never called; defined
+    // for the link, as the baseline form.
+    blend_run(d, n, source_of(s), coverage_of(k));
+#endif
+}
+
+template void blend_run_avx2(Premul8*, int, Premul, const float*) noexcept;
+template void blend_run_avx2(Premul8*, int, Premul, float) noexcept;
+template void blend_run_avx2(Premul8*, int, const Premul*, const float*) noexcept;
+template void blend_run_avx2(Premul8*, int, const Premul*, float) noexcept;
+
+} // namespace casteljau::detail
