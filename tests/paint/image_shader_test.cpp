@@ -329,6 +329,75 @@ TEST(ImageShader, CopiedRowsArePixelByPixelTheImagesPixels) {
             }
 }
 
+// An opaque image's 8-bit copy is its pixels quantized; one alpha short of
+// exactly 1 leaves the image without one.
+TEST(ImageShader, OnlyOpaqueImagesCarryTheir8BitCopy) {
+    RasterImage im = random_image(5, 4, 41);
+    im.find_opaque8();
+    EXPECT_TRUE(im.opaque8.empty());
+    for (Premul& p : im.pixels) p = {p.r, p.g, p.b, 1.0f};
+    im.find_opaque8();
+    ASSERT_EQ(im.opaque8.size(), im.pixels.size());
+    for (std::size_t i = 0; i < im.pixels.size(); ++i)
+        EXPECT_EQ(im.opaque8[i], quantize(im.pixels[i])) << "pixel " << i;
+    im.pixels[7].a = std::nextafter(1.0f, 0.0f);
+    im.find_opaque8();
+    EXPECT_TRUE(im.opaque8.empty());
+}
+
+// Where an opaque image is translated by whole pixels at opacity 1, spans of
+// coverage 1 on an 8-bit canvas take its stored bytes: the canvas comes out
+// as the composite of the pixel each device pixel lies on (found here),
+// byte for byte, over a translucent background, tiled and padded, on rows
+// left of, inside and right of the image. Elsewhere nothing is stored.
+TEST(ImageShader, OpaqueImagesStoreTheBytesTheirCompositeGives) {
+    RasterImage im = random_image(7, 3, 43);
+    for (Premul& p : im.pixels) p = {p.r, p.g, p.b, 1.0f};
+    im.find_opaque8();
+    ASSERT_FALSE(im.opaque8.empty());
+    const Premul bg{0.1f, 0.3f, 0.2f, 0.5f};
+    testing::Rng rng(47);
+    for (const bool repeat : {false, true})
+        for (int trial = 0; trial < 100; ++trial) {
+            const int tx = rng.integer(-30, 30), ty = rng.integer(-5, 5);
+            ImageShader sh;
+            ASSERT_TRUE(
+                sh.prepare(im, Affine::translate({double(tx), double(ty)}), 1, true, repeat));
+            const int x = rng.integer(-40, 40), y = rng.integer(-6, 6), n = rng.integer(1, 40);
+            // The canvas: columns [-40, 80) of row y.
+            Canvas8 canvas(120, 1, -40, y), expected(120, 1, -40, y);
+            canvas.fill(bg);
+            expected.fill(bg);
+            std::vector<Premul8> stored(static_cast<std::size_t>(n));
+            EXPECT_TRUE(sh.store_opaque(x, y, n, stored.data()));
+            ImageSpanPainter<Premul8> painter(canvas, sh);
+            painter.span({y, x, n, nullptr, 1.0f});
+            const auto index = [&](int k, int size) {
+                return repeat ? ((k % size) + size) % size : std::clamp(k, 0, size - 1);
+            };
+            for (int i = 0; i < n; ++i) {
+                Premul8& want = expected.row(0)[x + i + 40];
+                blend_over(want, im.at(index(x + i - tx, im.width), index(y - ty, im.height)), 1);
+                EXPECT_EQ(stored[std::size_t(i)], want)
+                    << (repeat ? "repeat" : "pad") << " translate " << where(tx, ty) << " row "
+                    << where(x, y) << " pixel " << i;
+            }
+            for (int i = 0; i < 120; ++i)
+                EXPECT_EQ(canvas.row(0)[i], expected.row(0)[i])
+                    << (repeat ? "repeat" : "pad") << " translate " << where(tx, ty) << " row "
+                    << where(x, y) << " n " << n << " column " << i - 40;
+        }
+    Premul8 out[4];
+    ImageShader sh;
+    ASSERT_TRUE(sh.prepare(im, Affine::translate({2, 1}), 0.6f, true, false));
+    EXPECT_FALSE(sh.store_opaque(0, 0, 4, out)) << "opacity below 1";
+    ASSERT_TRUE(sh.prepare(im, Affine::translate({2.5, 1}), 1, true, false));
+    EXPECT_FALSE(sh.store_opaque(0, 0, 4, out)) << "half a pixel off the grid";
+    const RasterImage translucent = random_image(7, 3, 43);
+    ASSERT_TRUE(sh.prepare(translucent, Affine::translate({2, 1}), 1, true, false));
+    EXPECT_FALSE(sh.store_opaque(0, 0, 4, out)) << "no 8-bit copy";
+}
+
 TEST(ImageShader, TabulatedColumnsShadeTheSameBits) {
     // A map that keeps rows level and columns upright: each column's
     // horizontal half of the sample, tabulated once, gives every row exactly

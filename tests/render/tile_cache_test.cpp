@@ -5,7 +5,9 @@
 #include "casteljau/scene/scene.h"
 #include "corpus.h"
 
+#include <algorithm>
 #include <gtest/gtest.h>
+#include <vector>
 
 namespace casteljau {
 namespace {
@@ -25,6 +27,21 @@ TEST(TileCache, FindsATileUnderItsPatternAndMapOnly) {
     cache.clear();
     EXPECT_EQ(cache.find(&a, m), nullptr);
     EXPECT_GE(cache.allocated(), 12u); // cleared, its storage kept for the next frame
+}
+
+// A slot taken for a new tile forgets the 8-bit copy of the tile before: the
+// new pixels are not yet written, and a stale copy would be drawn in their
+// place (raster_image.h).
+TEST(TileCache, ANewTileHasNo8BitCopyOfTheOldOne) {
+    TileCache cache(1000);
+    std::vector<Pattern> patterns(TileCache::kEntries + 1);
+    for (Pattern& p : patterns) {
+        RasterImage& tile = cache.insert(&p, Affine::identity(), 2, 2);
+        EXPECT_TRUE(tile.opaque8.empty());
+        std::fill(tile.pixels.begin(), tile.pixels.end(), Premul{0.5f, 0.5f, 0.5f, 1});
+        tile.find_opaque8();
+        EXPECT_EQ(tile.opaque8.size(), 4u);
+    }
 }
 
 TEST(TileCache, TheLeastRecentlyUsedTileIsReplacedFirst) {

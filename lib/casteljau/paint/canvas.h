@@ -239,6 +239,11 @@ class ShadedSpanPainter final : public SpanSink {
     /// Source-over of the shaded pixels through the span's coverage.
     void span(const Span& s) override {
         Pixel* d = canvas_.row(s.y - canvas_.origin_y()) + (s.x - canvas_.origin_x());
+        // A shader that can store its pixels as composited at coverage 1
+        // (ImageShader::store_opaque) does so: no colors, no blend.
+        if constexpr (std::is_same_v<Pixel, Premul8> &&
+                      requires { shader_.store_opaque(0, 0, 0, d); })
+            if (!s.coverage && s.solid == 1.0f && shader_.store_opaque(s.x, s.y, s.len, d)) return;
         for (int i = 0; i < s.len; i += kChunk) {
             const int n = std::min(kChunk, s.len - i);
             shader_.shade(s.x + i, s.y, n, colors_);

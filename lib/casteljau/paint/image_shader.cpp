@@ -89,38 +89,49 @@ Premul ImageShader::at(int x, int y) const {
     return c;
 }
 
-void ImageShader::copy_row(int x, int y, int n, Premul* out) const {
+template <class P, class Copy>
+void ImageShader::copy_stretches(const std::vector<P>& pixels, int x, int y, int n,
+                                 Copy&& copy) const {
     const RasterImage& im = *image_;
     const int w = im.width;
     // The index of column or row k: tiled by floor-mod, or padded.
     const auto index = [&](long long k, int size) {
         return int(repeat_ ? (k % size + size) % size : std::clamp<long long>(k, 0, size - 1));
     };
-    const Premul* row =
-        im.pixels.data() + std::size_t(index(y + shift_y_, im.height)) * std::size_t(w);
-    // Pixels [i, i + m) of the row to out[k, k + m): whole stretches, not a
-    // pixel and an index test at a time (a pattern's tiles are copied rows:
-    // a third of the 2k-patterns frame went to that loop). At opacity 1 a
-    // plain copy: c * 1 is c, bit for bit.
-    const auto copy = [&](int i, int m, int k) {
-        if (opacity_ == 1)
-            std::copy(row + i, row + i + m, out + k);
-        else
-            for (int j = 0; j < m; ++j) out[k + j] = scaled(row[i + j]);
-    };
+    const P* row = pixels.data() + std::size_t(index(y + shift_y_, im.height)) * std::size_t(w);
+    // Whole stretches of the row, not a pixel and an index test at a time (a
+    // pattern's tiles are copied rows: a third of the 2k-patterns frame went
+    // to that loop).
     const long long first = x + shift_x_;
     if (repeat_) {
         for (int k = 0, i = index(first, w); k < n; k += w - i, i = 0)
-            copy(i, std::min(n - k, w - i), k);
+            copy(row + i, std::min(n - k, w - i), k);
         return;
     }
     // Padded: the first column left of the image, the last right of it, the
     // row between (in long long: first + n may be past int's range).
     const int left = int(std::clamp<long long>(-first, 0, n));
     const int right = int(std::clamp<long long>(first + n - w, 0, n - left));
-    for (int k = 0; k < left; ++k) out[k] = scaled(row[0]);
-    if (n - left - right > 0) copy(int(first + left), n - left - right, left);
-    for (int k = n - right; k < n; ++k) out[k] = scaled(row[w - 1]);
+    for (int k = 0; k < left; ++k) copy(row, 1, k);
+    if (n - left - right > 0) copy(row + (first + left), n - left - right, left);
+    for (int k = n - right; k < n; ++k) copy(row + (w - 1), 1, k);
+}
+
+void ImageShader::copy_row(int x, int y, int n, Premul* out) const {
+    // At opacity 1 a plain copy: c * 1 is c, bit for bit.
+    copy_stretches(image_->pixels, x, y, n, [&](const Premul* from, int m, int k) {
+        if (opacity_ == 1)
+            std::copy(from, from + m, out + k);
+        else
+            for (int j = 0; j < m; ++j) out[k + j] = scaled(from[j]);
+    });
+}
+
+bool ImageShader::store_opaque(int x, int y, int n, Premul8* out) const {
+    if (!aligned_ || opacity_ != 1 || image_->opaque8.empty()) return false;
+    copy_stretches(image_->opaque8, x, y, n,
+                   [&](const Premul8* from, int m, int k) { std::copy(from, from + m, out + k); });
+    return true;
 }
 
 void ImageShader::shade(int x, int y, int n, Premul* out) const {

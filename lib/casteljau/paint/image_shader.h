@@ -61,6 +61,12 @@ class ImageShader {
     Premul at(int x, int y) const;
     /// at(x + i, y) into out[i] for i in [0, n): the same values, a row at a time.
     void shade(int x, int y, int n, Premul* out) const;
+    /// Where the map translates by whole pixels, the opacity is 1 and the
+    /// image carries opaque8 (raster_image.h): writes the n pixels from
+    /// device pixel (x, y) into out as source-over at coverage 1 would
+    /// (the same bytes, copied) and returns true; else writes nothing and
+    /// returns false.
+    bool store_opaque(int x, int y, int n, Premul8* out) const;
 
   private:
     /// A color times the opacity (inlined by force: once a pixel).
@@ -69,6 +75,12 @@ class ImageShader {
     }
     /// shade() where the map translates by whole pixels: the pixels copied.
     void copy_row(int x, int y, int n, Premul* out) const;
+    /// The stretches of `pixels` (the image's, or its opaque8) that device
+    /// row y, columns [x, x + n) take where the map translates by whole
+    /// pixels, each given as copy(from, m, k): m pixels from `from` to the
+    /// row's k-th on.
+    template <class P, class Copy>
+    void copy_stretches(const std::vector<P>& pixels, int x, int y, int n, Copy&& copy) const;
 
   public:
     /// The two pixels a bilinear sample lies between along one axis, and

@@ -436,6 +436,7 @@ bool Renderer::prepare_pattern(const Pattern& p, const Affine& m, float opacity)
         RasterImage& drawn = tiles_.insert(&p, to_device, w, h);
         for (int y = 0; y < h; ++y)
             std::copy_n(tile_canvas_.row(y), w, drawn.pixels.begin() + std::ptrdiff_t(y) * w);
+        drawn.find_opaque8();
         tile = &drawn;
     }
     return image_shader_.prepare(

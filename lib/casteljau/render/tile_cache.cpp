@@ -35,6 +35,7 @@ RasterImage& TileCache::insert(const Pattern* pattern, const Affine& map, int w,
         slot.image.pixels.swap(grown);
     }
     slot.image.pixels.resize(n);
+    slot.image.opaque8.clear(); // of the pixels before: found again once they are written
     slot.image.width = w;
     slot.image.height = h;
     slot.of = pattern;

@@ -32,7 +32,9 @@ class TileCache {
     /// The tile of `pattern` under `map`, or null when none is kept.
     const RasterImage* find(const Pattern* pattern, const Affine& map) noexcept;
     /// A tile of w x h pixels (w h <= the bound) for `pattern` under `map`,
-    /// kept in place of the least recently used; the caller writes its pixels.
+    /// kept in place of the least recently used; the caller writes its pixels
+    /// (and then finds their opaque8: its bytes, a quarter of the pixels',
+    /// are not counted against the bound).
     RasterImage& insert(const Pattern* pattern, const Affine& map, int w, int h);
     /// Forgets every tile (a new scene may hold other patterns at the same
     /// addresses), keeping the storage.
