@@ -14,6 +14,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace casteljau {
@@ -400,14 +401,18 @@ TEST(ImageShader, OpaqueImagesStoreTheBytesTheirCompositeGives) {
 
 TEST(ImageShader, TabulatedColumnsShadeTheSameBits) {
     // A map that keeps rows level and columns upright: each column's
-    // horizontal half of the sample, tabulated once, gives every row exactly
-    // what computing it per pixel gives; rows reaching past the table, and a
-    // map of another kind, are computed as before.
+    // horizontal half of the sample, tabulated once, and each image row
+    // sampled along the columns, kept for the next device row, give every
+    // row exactly what computing it per pixel gives; rows reaching past the
+    // table, and a map of another kind, are computed as before. Scaled up,
+    // down and mirrored.
     const RasterImage im = random_image(11, 9, 29);
     const Affine maps[] = {
         Affine::translate({3.3, -2.1}) * Affine::scale(2.7, 1.9),
         Affine::translate({40.5, 30.25}) * Affine::scale(-1.5, -3.25),
         Affine::translate({1, 2}) * Affine::scale(0.37, 5),
+        Affine::translate({-2.5, 7.25}) * Affine::scale(4, 0.3),
+        Affine::translate({0.5, 0.5}),
         Affine::translate({5, 5}) * Affine::rotate(0.7) * Affine::scale(2.2), // not tabulated
         Affine::translate({-3, 5}),                                           // copied
     };
@@ -428,6 +433,26 @@ TEST(ImageShader, TabulatedColumnsShadeTheSameBits) {
                     const Premul &p = a[std::size_t(i)], &q = b[std::size_t(i)];
                     EXPECT_TRUE(p.r == q.r && p.g == q.g && p.b == q.b && p.a == q.a)
                         << (repeat ? "repeat " : "pad ") << where(x + i, y) << " map e " << m.e;
+                }
+            }
+            // Rows in order, as a shape's spans come (each image row sampled
+            // along the columns is kept for the next device row): chunks to
+            // the left of, across, inside and right of the columns already
+            // sampled, and apart from them.
+            for (int y = -12; y < 50; ++y) {
+                const int a = rng.integer(-20, 60), b = rng.integer(a, 70);
+                const std::pair<int, int> chunks[] = {
+                    {a, b}, {a - 5, b + 3}, {a + 2, a + 4}, {b, b + 6}, {-20, -18}};
+                for (const auto& [x0, x1] : chunks) {
+                    const int n = x1 - x0;
+                    if (n <= 0) continue;
+                    std::vector<Premul> p(static_cast<std::size_t>(n)), q(p);
+                    plain.shade(x0, y, n, p.data());
+                    tabulated.shade(x0, y, n, q.data());
+                    for (int i = 0; i < n; ++i)
+                        EXPECT_TRUE(same(p[std::size_t(i)], q[std::size_t(i)]))
+                            << (repeat ? "repeat " : "pad ") << where(x0 + i, y) << " of chunk "
+                            << x0 << ".." << x1 << " map e " << m.e;
                 }
             }
             // prepare() drops the table: another map shades as its own.

@@ -78,9 +78,38 @@ void ImageShader::tabulate(int x0, int x1) {
     // so row 0's expression gives each row's value.
     columns_x0_ = x0;
     columns_.resize(std::size_t(x1 - x0));
+    for (Along& a : along_) a.row = -1;
     for (int x = x0; x < x1; ++x)
         columns_[std::size_t(x - x0)] =
             bilinear_axis((m * Point{x + 0.5, 0.5}).x, image_->width, inv_w_, repeat_);
+}
+
+int ImageShader::ay_slot(int j, int other) const {
+    for (int k = 0; k < 2; ++k)
+        if (along_[k].row == j) return k;
+    // The slot not holding `other`, the row needed beside this one.
+    return along_[0].row == other ? 1 : 0;
+}
+
+const Premul* ImageShader::along(int k, int j, int lo, int hi) const {
+    Along& a = along_[std::size_t(k)];
+    const std::size_t size = columns_.size();
+    if (a.pixels.size() < size) a.pixels.resize(size);
+    const Premul* row = image_->pixels.data() + std::size_t(j) * std::size_t(image_->width);
+    const auto fill = [&](int from, int to) {
+        for (int c = from; c < to; ++c) {
+            const Axis& ax = columns_[std::size_t(c)];
+            a.pixels[std::size_t(c)] = lerp(row[ax.i0], row[ax.i1], ax.t);
+        }
+    };
+    if (a.row != j || hi < a.lo || lo > a.hi) { // another row, or columns apart from those held
+        fill(lo, hi);
+        a.row = j, a.lo = lo, a.hi = hi;
+    } else { // the same row: the columns on either side of those held
+        if (lo < a.lo) fill(lo, a.lo), a.lo = lo;
+        if (hi > a.hi) fill(a.hi, hi), a.hi = hi;
+    }
+    return a.pixels.data();
 }
 
 Premul ImageShader::at(int x, int y) const {
@@ -161,12 +190,10 @@ void ImageShader::shade(int x, int y, int n, Premul* out) const {
     // In long long: x + n may be past int's range (x is any pixel at()).
     const long long first = static_cast<long long>(x) - columns_x0_;
     if (level && first >= 0 && first + n <= static_cast<long long>(columns_.size())) {
-        const Axis* ax = columns_.data() + first;
-        const Axis& ay = row_axis;
-        for (int i = 0; i < n; ++i)
-            out[i] =
-                scaled(lerp(lerp(pixel(ax[i].i0, ay.i0), pixel(ax[i].i1, ay.i0), ax[i].t),
-                            lerp(pixel(ax[i].i0, ay.i1), pixel(ax[i].i1, ay.i1), ax[i].t), ay.t));
+        const int lo = int(first), hi = lo + n;
+        const Premul* top = along(ay_slot(row_axis.i0, row_axis.i1), row_axis.i0, lo, hi);
+        const Premul* bottom = along(ay_slot(row_axis.i1, row_axis.i0), row_axis.i1, lo, hi);
+        for (int i = 0; i < n; ++i) out[i] = scaled(lerp(top[lo + i], bottom[lo + i], row_axis.t));
         return;
     }
     for (int i = 0; i < n; ++i) {
