@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <utility>
 #include <vector>
 
 namespace casteljau {
@@ -142,20 +143,34 @@ Canvas render(const std::string& svg, std::vector<SvgDiagnostic>* warnings = nul
     return c;
 }
 
+// Trial `trial`'s gradient of `stops`: linear on even trials, radial on odd
+// ones, the spreads in turn, end points, circle and focal point at random in
+// a 200 px square, with a focal circle on every fourth trial.
+Gradient random_gradient(testing::Rng& rng, int trial, std::vector<GradientStop> stops) {
+    const auto kind = trial % 2 ? Gradient::Kind::Radial : Gradient::Kind::Linear;
+    Gradient g = two_stops(kind, Spread(trial / 2 % 3));
+    g.stops = std::move(stops);
+    g.p1 = rng.point(200), g.p2 = rng.point(200);
+    g.center = rng.point(200), g.radius = rng.uniform(5, 150);
+    g.focal = g.center + Vec2{rng.uniform(-1, 1), rng.uniform(-1, 1)} * (0.5 * g.radius);
+    g.focal_radius = trial % 4 == 1 ? rng.uniform(0, 0.25) * g.radius : 0;
+    return g;
+}
+
+// The identity, or on every third trial a random rotation and scale.
+Affine random_map(testing::Rng& rng, int trial) {
+    const Affine m = Affine::rotate(rng.uniform(0, 6.28)) * Affine::scale(rng.uniform(0.3, 3));
+    return trial % 3 ? Affine::identity() : m;
+}
+
 TEST(Gradient, RowsShadeTheTableEntryNearestEachPixelsParameter) {
     // Black to white, opaque: table entry k is the gray k / (kGradientLut - 1),
     // so each shaded pixel tells which entry it took.
     testing::Rng rng(17);
     for (int trial = 0; trial < 60; ++trial) {
-        const auto kind = trial % 2 ? Gradient::Kind::Radial : Gradient::Kind::Linear;
-        Gradient g = two_stops(kind, Spread(trial / 2 % 3));
-        g.p1 = rng.point(200), g.p2 = rng.point(200);
-        g.center = rng.point(200), g.radius = rng.uniform(5, 150);
-        g.focal = g.center + Vec2{rng.uniform(-1, 1), rng.uniform(-1, 1)} * (0.5 * g.radius);
-        g.focal_radius = trial % 4 == 1 ? rng.uniform(0, 0.25) * g.radius : 0;
-        const Affine m = Affine::rotate(rng.uniform(0, 6.28)) * Affine::scale(rng.uniform(0.3, 3));
+        const Gradient g = random_gradient(rng, trial, {{0, {0, 0, 0, 1}}, {1, {1, 1, 1, 1}}});
         GradientShader sh;
-        ASSERT_TRUE(sh.prepare(g, trial % 3 ? Affine::identity() : m, 1));
+        ASSERT_TRUE(sh.prepare(g, random_map(rng, trial), 1));
         const int x = rng.integer(-100, 200), y = rng.integer(-100, 200), n = rng.integer(1, 300);
         std::vector<Premul> row(std::size_t(n), Premul{});
         sh.shade(x, y, n, row.data());
@@ -167,6 +182,33 @@ TEST(Gradient, RowsShadeTheTableEntryNearestEachPixelsParameter) {
             EXPECT_NEAR(row[std::size_t(i)].r * (kGradientLut - 1), t * (kGradientLut - 1),
                         0.5 + 1e-4)
                 << "trial " << trial << ", pixel (" << x + i << ", " << y << "), t " << t;
+        }
+    }
+}
+
+// Rows are shaded in blocks, two pixels at a time where the CPU has SSE2,
+// and one at a time at a block's odd end: every pixel of a row gets the bits
+// that shading it alone (at(), the one-pixel path) gives. Linear and radial,
+// with and without a focal circle, every spread, rows across several
+// blocks, and geometry whose parameter overflows to NaN (the first stop).
+TEST(Gradient, RowsShadeAsEachPixelAlone) {
+    testing::Rng rng(19);
+    for (int trial = 0; trial < 90; ++trial) {
+        // Three stops, translucent, with a hard edge at the end.
+        const std::vector<GradientStop> stops = {
+            {0, {0.9f, 0.1f, 0.2f, 1}}, {0.6f, {0.1f, 0.3f, 1, 0.5f}}, {1, {0, 1, 0, 1}}};
+        Gradient g = random_gradient(rng, trial, stops);
+        if (trial % 15 == 14) g.p1 = {-1e308, 0}, g.p2 = {1e308, 1}; // t is NaN
+        GradientShader sh;
+        ASSERT_TRUE(sh.prepare(g, random_map(rng, trial), 0.8f));
+        const int x = rng.integer(-100, 200), y = rng.integer(-100, 200), n = rng.integer(1, 300);
+        std::vector<Premul> row(std::size_t(n), Premul{});
+        sh.shade(x, y, n, row.data());
+        for (int i = 0; i < n; ++i) {
+            const Premul p = row[std::size_t(i)], q = sh.at(x + i, y);
+            EXPECT_TRUE(p.r == q.r && p.g == q.g && p.b == q.b && p.a == q.a)
+                << "trial " << trial << ", pixel " << i << " of " << n << " from (" << x << ", "
+                << y << ")";
         }
     }
 }

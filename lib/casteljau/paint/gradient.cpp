@@ -3,7 +3,12 @@
 #include "casteljau/geom/pixel_index.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace casteljau {
 
@@ -151,13 +156,62 @@ namespace {
     return std::size_t(k + (v - k >= 0.5));
 }
 
+// Shading runs in blocks of pixels, in three passes: the block's
+// parameters t (spread() not yet applied), their table entries, then the
+// colors copied. The first two are plain arithmetic loops, two pixels to a
+// register (the linear one so compiled, the radial one and the entries in
+// SSE2); one loop doing all three a pixel at a time ran at 8 cycles a
+// pixel, each pixel's chain of conversions ending in a load's address. The
+// linear gradient's frame (8-bit canvas): 0.66 -> 0.44x Cairo's time; the
+// radial one: 0.60 -> 0.36x.
+constexpr int kBlock = 64;
+
+/// e[i] = entry(spread(t[i], S)) for i in [0, m): for pad, two at a time
+/// with the same arithmetic (maxpd gives 0 for NaN, the first stop, as
+/// entry() does).
+template <Spread S>
+void entries_of(const double* t, int m, int* e) {
+    int i = 0;
+#if defined(__SSE2__)
+    if constexpr (S == Spread::Pad) {
+        const __m128d zero = _mm_setzero_pd(), one = _mm_set1_pd(1.0), half = _mm_set1_pd(0.5);
+        const __m128d last = _mm_set1_pd(kGradientLut - 1);
+        for (; i + 2 <= m; i += 2) {
+            const __m128d v =
+                _mm_mul_pd(_mm_min_pd(_mm_max_pd(_mm_loadu_pd(t + i), zero), one), last);
+            const __m128d k = _mm_cvtepi32_pd(_mm_cvttpd_epi32(v));
+            const __m128d up = _mm_and_pd(_mm_cmpge_pd(_mm_sub_pd(v, k), half), one);
+            _mm_storel_epi64(reinterpret_cast<__m128i*>(e + i),
+                             _mm_cvttpd_epi32(_mm_add_pd(k, up)));
+        }
+    }
+#endif
+    for (; i < m; ++i) e[i] = int(entry(spread(t[i], S)));
+}
+
+/// out[i] = the color at parameter t_i for i in [0, n), params(i0, m, t)
+/// giving t_i0 to t_(i0 + m - 1) into t.
+template <Spread S, class Params>
+[[gnu::always_inline]] inline void look_up(const Premul* lut, int n, Premul* out, Params params) {
+    std::array<double, kBlock> t;
+    std::array<int, kBlock> e;
+    for (int i0 = 0; i0 < n; i0 += kBlock) {
+        const int m = std::min(kBlock, n - i0);
+        params(i0, m, t.data());
+        entries_of<S>(t.data(), m, e.data());
+        for (int i = 0; i < m; ++i) out[i0 + i] = lut[e[std::size_t(i)]];
+    }
+}
+
 } // namespace
 
 template <Spread S>
 void GradientShader::shade_linear(int x, int y, int n, Premul* out) const {
     // t is affine in device space: one multiply-add a pixel, no division.
-    const double row = linear_.y * (y + 0.5) + linear_.t0;
-    for (int i = 0; i < n; ++i) out[i] = lut_[entry(spread(linear_.x * (x + i + 0.5) + row, S))];
+    const double row = linear_.y * (y + 0.5) + linear_.t0, dx = linear_.x;
+    look_up<S>(lut_.data(), n, out, [&](int i0, int m, double* t) {
+        for (int i = 0; i < m; ++i) t[i] = dx * (x + i0 + i + 0.5) + row;
+    });
 }
 
 template <Spread S, bool Ring>
@@ -179,19 +233,42 @@ void GradientShader::shade_radial(int x, int y, int n, Premul* out) const {
     const double r0dr = r.r0 * r.dr, r0_sq = r.r0 * r.r0, scale = r.t1 * inv_a;
     const double cy = y + 0.5;
     const Vec2 row{m.c * cy + m.e - r.focal.x, m.d * cy + m.f - r.focal.y};
-    for (int i = 0; i < n; ++i) {
-        const double cx = x + i + 0.5;
-        const Vec2 d{m.a * cx + row.x, m.b * cx + row.y};
-        double t;
-        if constexpr (Ring) {
-            const double b = d.dot(e) + r0dr;
-            t = r.t0 + (b - std::sqrt(std::max(0.0, b * b - a * (d.length_sq() - r0_sq)))) * scale;
-        } else {
-            const double b = d.dot(e);
-            t = (b - std::sqrt(std::max(0.0, b * b - a * d.length_sq()))) * inv_a;
+    look_up<S>(lut_.data(), n, out, [&](int i0, int count, double* t) {
+        int i = 0;
+#if defined(__SSE2__)
+        // The loop below two pixels at a time, operation for operation (maxpd
+        // gives 0 for NaN, as std::max(0.0, v) does).
+        const auto all = [](double v) { return _mm_set1_pd(v); };
+        const __m128d ma = all(m.a), mb = all(m.b), rx = all(row.x), ry = all(row.y);
+        const __m128d ex = all(e.x), ey = all(e.y), va = all(a), zero = _mm_setzero_pd();
+        for (; i + 2 <= count; i += 2) {
+            const __m128i k = _mm_setr_epi32(x + i0 + i, x + i0 + i + 1, 0, 0);
+            const __m128d cx = _mm_add_pd(_mm_cvtepi32_pd(k), all(0.5));
+            const __m128d dx = _mm_add_pd(_mm_mul_pd(ma, cx), rx);
+            const __m128d dy = _mm_add_pd(_mm_mul_pd(mb, cx), ry);
+            __m128d b = _mm_add_pd(_mm_mul_pd(dx, ex), _mm_mul_pd(dy, ey));
+            __m128d len = _mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy));
+            if constexpr (Ring) b = _mm_add_pd(b, all(r0dr)), len = _mm_sub_pd(len, all(r0_sq));
+            const __m128d q = _mm_sub_pd(_mm_mul_pd(b, b), _mm_mul_pd(va, len));
+            const __m128d root = _mm_sqrt_pd(_mm_max_pd(q, zero));
+            __m128d v = _mm_mul_pd(_mm_sub_pd(b, root), all(Ring ? scale : inv_a));
+            if constexpr (Ring) v = _mm_add_pd(all(r.t0), v);
+            _mm_storeu_pd(t + i, v);
         }
-        out[i] = lut_[entry(spread(t, S))];
-    }
+#endif
+        for (; i < count; ++i) {
+            const double cx = x + i0 + i + 0.5;
+            const Vec2 d{m.a * cx + row.x, m.b * cx + row.y};
+            if constexpr (Ring) {
+                const double b = d.dot(e) + r0dr;
+                t[i] = r.t0 +
+                       (b - std::sqrt(std::max(0.0, b * b - a * (d.length_sq() - r0_sq)))) * scale;
+            } else {
+                const double b = d.dot(e);
+                t[i] = (b - std::sqrt(std::max(0.0, b * b - a * d.length_sq()))) * inv_a;
+            }
+        }
+    });
 }
 
 template <Spread S>
