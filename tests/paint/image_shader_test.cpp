@@ -463,6 +463,38 @@ TEST(ImageShader, TabulatedColumnsShadeTheSameBits) {
         }
 }
 
+// Turned maps shade a row's pixels two at a time where the CPU has SSE2
+// (padded, bilinear), and the last odd one alone: every pixel of a row gets
+// the bits that shading it alone (at()) gives, in every mode, with points
+// far outside the image and one whose image x is NaN (the first column).
+TEST(ImageShader, TurnedRowsShadeAsEachPixelAlone) {
+    const RasterImage im = random_image(9, 7, 13);
+    const Affine maps[] = {
+        Affine::translate({5, 5}) * Affine::rotate(0.7) * Affine::scale(2.2),
+        Affine::translate({-20.5, 3.25}) * Affine::rotate(-2.9) * Affine::scale(0.4, 3),
+        Affine{1, 0.5, 0, 1, 2, 2}, // a skew
+        Affine::rotate(1) * Affine::scale(1e-5) * Affine::translate({1e303, 1e303}),
+        {2e-300, -1e-300, -1, 1, 0, 0}, // at (7e8, -7e8) the image x is inf - inf: NaN
+    };
+    testing::Rng rng(53);
+    for (const Affine& m : maps)
+        for (const auto& [smooth, repeat] : kModes) {
+            ImageShader sh;
+            ASSERT_TRUE(sh.prepare(im, m, 0.9f, smooth, repeat));
+            for (const int n : {2, 3, 64, 65, 200}) {
+                const bool far = m.a < 1e-200;
+                const int x = far ? 700000000 : rng.integer(-60, 60);
+                const int y = far ? -700000000 : rng.integer(-60, 60);
+                std::vector<Premul> row(static_cast<std::size_t>(n));
+                sh.shade(x, y, n, row.data());
+                for (int i = 0; i < n; ++i)
+                    EXPECT_TRUE(same(row[std::size_t(i)], sh.at(x + i, y)))
+                        << (smooth ? "bilinear" : "nearest") << (repeat ? ", repeat " : ", pad ")
+                        << where(x + i, y) << " map b " << m.b;
+            }
+        }
+}
+
 bool in_unit_range(const Premul& p) {
     const auto ok = [](float v) { return v >= 0 && v <= 1; };
     return ok(p.r) && ok(p.g) && ok(p.b) && ok(p.a);

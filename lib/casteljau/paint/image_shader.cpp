@@ -5,6 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace casteljau {
 
 namespace {
@@ -34,6 +38,27 @@ using Axis = ImageShader::Axis;
     const double t = u - i; // in [0, 1] but for NaN, or rounding at huge u
     return {i, i + 1 < n ? i + 1 : (repeat ? 0 : n - 1), float(t >= 0 ? std::min(t, 1.0) : 0.0)};
 }
+
+#if defined(__SSE2__)
+/// bilinear_axis(v, n, ., false) of two coordinates at once, operation for
+/// operation: maxpd gives 0 for NaN, as the scalar form's test does, and -0
+/// for +0 beside it, which weighs a sample the same.
+struct PadAxes {
+    PadAxes(__m128d v, int n) {
+        const __m128d u = _mm_min_pd(_mm_max_pd(_mm_sub_pd(v, _mm_set1_pd(0.5)), _mm_setzero_pd()),
+                                     _mm_set1_pd(n - 1.0));
+        const __m128i i = _mm_cvttpd_epi32(u);
+        const __m128 t = _mm_cvtpd_ps(_mm_sub_pd(u, _mm_cvtepi32_pd(i)));
+        i0[0] = _mm_cvtsi128_si32(i), i0[1] = _mm_cvtsi128_si32(_mm_shuffle_epi32(i, 1));
+        _mm_storel_pi(reinterpret_cast<__m64*>(weight), t);
+        last = n - 1;
+    }
+    Axis lane(int k) const { return {i0[k], i0[k] < last ? i0[k] + 1 : last, weight[k]}; }
+    int i0[2];
+    float weight[2];
+    int last;
+};
+#endif
 
 Premul lerp(const Premul& a, const Premul& b, float t) {
     return {a.r + (b.r - a.r) * t, a.g + (b.g - a.g) * t, a.b + (b.b - a.b) * t,
@@ -196,7 +221,29 @@ void ImageShader::shade(int x, int y, int n, Premul* out) const {
         for (int i = 0; i < n; ++i) out[i] = scaled(lerp(top[lo + i], bottom[lo + i], row_axis.t));
         return;
     }
-    for (int i = 0; i < n; ++i) {
+    int i = 0;
+#if defined(__SSE2__)
+    // Padded and turned: two pixels' axes at a time (the turned image's
+    // frame 1.07 -> 0.84x Cairo's time); tiling's floor-mod has no SSE2 form.
+    if (!repeat_ && !level) {
+        const auto sample = [&](const Axis& ax, const Axis& ay) {
+            return scaled(lerp(lerp(pixel(ax.i0, ay.i0), pixel(ax.i1, ay.i0), ax.t),
+                               lerp(pixel(ax.i0, ay.i1), pixel(ax.i1, ay.i1), ax.t), ay.t));
+        };
+        for (; i + 2 <= n; i += 2) {
+            const __m128d cx = _mm_add_pd(_mm_cvtepi32_pd(_mm_setr_epi32(x + i, x + i + 1, 0, 0)),
+                                          _mm_set1_pd(0.5));
+            const auto mapped = [&](double a, double c, double e) { // a cx + c cy + e
+                return _mm_add_pd(_mm_add_pd(_mm_mul_pd(_mm_set1_pd(a), cx), _mm_set1_pd(c * cy)),
+                                  _mm_set1_pd(e));
+            };
+            PadAxes ax(mapped(m.a, m.c, m.e), im.width), ay(mapped(m.b, m.d, m.f), im.height);
+            out[i] = sample(ax.lane(0), ay.lane(0));
+            out[i + 1] = sample(ax.lane(1), ay.lane(1));
+        }
+    }
+#endif
+    for (; i < n; ++i) {
         const Point p = m * Point{x + i + 0.5, cy};
         const Axis ax = bilinear_axis(p.x, im.width, inv_w_, repeat_);
         const Axis ay = level ? row_axis : bilinear_axis(p.y, im.height, inv_h_, repeat_);
