@@ -136,8 +136,8 @@ struct OneColor {
     __m128 color(int) const {
         return src;
     }
-    /// Pixels i to i + 3's source alpha.
-    __m128 four_alpha(int) const { return alpha; }
+    /// The source alpha of the four pixels whose colors are c.
+    __m128 four_alpha(const __m128*) const { return alpha; }
     __m128 src = _mm_setr_ps(s.r, s.g, s.b, s.a); ///< the source's lanes, made once
     __m128 alpha = _mm_set1_ps(s.a);              ///< its alpha in every lane
 #endif
@@ -153,9 +153,13 @@ struct Colors {
     __m128 color(int i) const {
         return _mm_loadu_ps(&s[i + J].r);
     }
-    /// Pixels i to i + 3's source alpha.
-    __m128 four_alpha(int i) const {
-        return _mm_setr_ps(s[i].a, s[i + 1].a, s[i + 2].a, s[i + 3].a);
+    /// The source alphas of the four pixels whose colors are c[0] to c[3]:
+    /// lane 3 of each, by two unpacks and a shuffle (four scalar loads and
+    /// inserts cost more).
+    __m128 four_alpha(const __m128* c) const {
+        const __m128 a01 = _mm_unpackhi_ps(c[0], c[1]); // [b0 b1 a0 a1]
+        const __m128 a23 = _mm_unpackhi_ps(c[2], c[3]); // [b2 b3 a2 a3]
+        return _mm_shuffle_ps(a01, a23, _MM_SHUFFLE(3, 2, 3, 2));
     }
 #endif
 };
@@ -173,17 +177,15 @@ void blend_run(Premul8* d, int n, const Source& source, Coverage coverage, int f
     for (; i + 4 <= n; i += 4) {
         const __m128 kk = coverage.four(i);
         const __m128 k255 = _mm_mul_ps(kk, scale);
-        const __m128 inv = _mm_sub_ps(one, _mm_mul_ps(kk, source.four_alpha(i)));
+        const __m128 colors[4] = {source.template color<0>(i), source.template color<1>(i),
+                                  source.template color<2>(i), source.template color<3>(i)};
+        const __m128 inv = _mm_sub_ps(one, _mm_mul_ps(kk, source.four_alpha(colors)));
         const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(d + i));
         const __m128i lo = _mm_unpacklo_epi8(bytes, zero), hi = _mm_unpackhi_epi8(bytes, zero);
-        const __m128i q0 =
-            blend_lane<0>(source.template color<0>(i), k255, inv, _mm_unpacklo_epi16(lo, zero));
-        const __m128i q1 =
-            blend_lane<1>(source.template color<1>(i), k255, inv, _mm_unpackhi_epi16(lo, zero));
-        const __m128i q2 =
-            blend_lane<2>(source.template color<2>(i), k255, inv, _mm_unpacklo_epi16(hi, zero));
-        const __m128i q3 =
-            blend_lane<3>(source.template color<3>(i), k255, inv, _mm_unpackhi_epi16(hi, zero));
+        const __m128i q0 = blend_lane<0>(colors[0], k255, inv, _mm_unpacklo_epi16(lo, zero));
+        const __m128i q1 = blend_lane<1>(colors[1], k255, inv, _mm_unpackhi_epi16(lo, zero));
+        const __m128i q2 = blend_lane<2>(colors[2], k255, inv, _mm_unpacklo_epi16(hi, zero));
+        const __m128i q3 = blend_lane<3>(colors[3], k255, inv, _mm_unpackhi_epi16(hi, zero));
         const __m128i packed = _mm_packus_epi16(_mm_packs_epi32(q0, q1), _mm_packs_epi32(q2, q3));
         _mm_storeu_si128(reinterpret_cast<__m128i*>(d + i), packed);
     }
