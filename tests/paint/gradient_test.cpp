@@ -163,6 +163,18 @@ Affine random_map(testing::Rng& rng, int trial) {
     return trial % 3 ? Affine::identity() : m;
 }
 
+// A row of 1 to 300 pixels shaded at once, from a random place.
+struct ShadedRow {
+    int x, y;
+    std::vector<Premul> pixels;
+};
+ShadedRow shade_random_row(const GradientShader& sh, testing::Rng& rng) {
+    const int x = rng.integer(-100, 200), y = rng.integer(-100, 200), n = rng.integer(1, 300);
+    ShadedRow r{x, y, std::vector<Premul>(std::size_t(n))};
+    sh.shade(x, y, n, r.pixels.data());
+    return r;
+}
+
 TEST(Gradient, RowsShadeTheTableEntryNearestEachPixelsParameter) {
     // Black to white, opaque: table entry k is the gray k / (kGradientLut - 1),
     // so each shaded pixel tells which entry it took.
@@ -171,9 +183,8 @@ TEST(Gradient, RowsShadeTheTableEntryNearestEachPixelsParameter) {
         const Gradient g = random_gradient(rng, trial, {{0, {0, 0, 0, 1}}, {1, {1, 1, 1, 1}}});
         GradientShader sh;
         ASSERT_TRUE(sh.prepare(g, random_map(rng, trial), 1));
-        const int x = rng.integer(-100, 200), y = rng.integer(-100, 200), n = rng.integer(1, 300);
-        std::vector<Premul> row(std::size_t(n), Premul{});
-        sh.shade(x, y, n, row.data());
+        const auto [x, y, row] = shade_random_row(sh, rng);
+        const int n = int(row.size());
         for (int i = 0; i < n; ++i) {
             // The nearest entry to the reference t; a row computes t in another
             // order (from device space, with 1 / a for the radial division),
@@ -201,9 +212,8 @@ TEST(Gradient, RowsShadeAsEachPixelAlone) {
         if (trial % 15 == 14) g.p1 = {-1e308, 0}, g.p2 = {1e308, 1}; // t is NaN
         GradientShader sh;
         ASSERT_TRUE(sh.prepare(g, random_map(rng, trial), 0.8f));
-        const int x = rng.integer(-100, 200), y = rng.integer(-100, 200), n = rng.integer(1, 300);
-        std::vector<Premul> row(std::size_t(n), Premul{});
-        sh.shade(x, y, n, row.data());
+        const auto [x, y, row] = shade_random_row(sh, rng);
+        const int n = int(row.size());
         for (int i = 0; i < n; ++i) {
             const Premul p = row[std::size_t(i)], q = sh.at(x + i, y);
             EXPECT_TRUE(p.r == q.r && p.g == q.g && p.b == q.b && p.a == q.a)

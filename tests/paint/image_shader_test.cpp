@@ -62,6 +62,11 @@ Premul mix(const Premul& a, const Premul& b, double t) {
     return {m(a.r, b.r), m(a.g, b.g), m(a.b, b.b), m(a.a, b.a)};
 }
 
+/// Column or row k of an image `size` pixels long: tiled by floor-mod, or padded.
+int tiled_or_padded(int k, int size, bool repeat) {
+    return repeat ? ((k % size) + size) % size : std::clamp(k, 0, size - 1);
+}
+
 /// The four combinations of smooth and repeat.
 constexpr bool kModes[4][2] = {{false, false}, {false, true}, {true, false}, {true, true}};
 
@@ -316,11 +321,9 @@ TEST(ImageShader, CopiedRowsArePixelByPixelTheImagesPixels) {
                 const int n = rng.integer(1, 40);
                 std::vector<Premul> row(static_cast<std::size_t>(n));
                 sh.shade(x, y, n, row.data());
-                const auto index = [&](int k, int size) {
-                    return repeat ? ((k % size) + size) % size : std::clamp(k, 0, size - 1);
-                };
                 for (int i = 0; i < n; ++i) {
-                    const Premul p = im.at(index(x + i - tx, im.width), index(y - ty, im.height));
+                    const Premul p = im.at(tiled_or_padded(x + i - tx, im.width, repeat),
+                                           tiled_or_padded(y - ty, im.height, repeat));
                     const Premul want{p.r * opacity, p.g * opacity, p.b * opacity, p.a * opacity};
                     EXPECT_TRUE(same(row[std::size_t(i)], want))
                         << (repeat ? "repeat" : "pad") << " opacity " << opacity << " translate "
@@ -373,12 +376,12 @@ TEST(ImageShader, OpaqueImagesStoreTheBytesTheirCompositeGives) {
             EXPECT_TRUE(sh.store_opaque(x, y, n, stored.data()));
             ImageSpanPainter<Premul8> painter(canvas, sh);
             painter.span({y, x, n, nullptr, 1.0f});
-            const auto index = [&](int k, int size) {
-                return repeat ? ((k % size) + size) % size : std::clamp(k, 0, size - 1);
-            };
             for (int i = 0; i < n; ++i) {
                 Premul8& want = expected.row(0)[x + i + 40];
-                blend_over(want, im.at(index(x + i - tx, im.width), index(y - ty, im.height)), 1);
+                blend_over(want,
+                           im.at(tiled_or_padded(x + i - tx, im.width, repeat),
+                                 tiled_or_padded(y - ty, im.height, repeat)),
+                           1);
                 EXPECT_EQ(stored[std::size_t(i)], want)
                     << (repeat ? "repeat" : "pad") << " translate " << where(tx, ty) << " row "
                     << where(x, y) << " pixel " << i;

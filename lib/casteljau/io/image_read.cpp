@@ -225,7 +225,6 @@ ImageReadResult decode(std::span<const unsigned char> head, const std::string& n
             p = {premul(red), premul(green), premul(blue), alpha};
         }
         if (orientation >= 2 && orientation <= 8) img = oriented(img, orientation);
-        img.find_opaque8();
         r.image = std::make_shared<const RasterImage>(std::move(img));
     } catch (const std::exception& e) {
         r.error = std::string("decoder failed: ") + e.what();

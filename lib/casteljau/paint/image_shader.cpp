@@ -109,15 +109,14 @@ void ImageShader::tabulate(int x0, int x1) {
             bilinear_axis((m * Point{x + 0.5, 0.5}).x, image_->width, inv_w_, repeat_);
 }
 
-int ImageShader::ay_slot(int j, int other) const {
-    for (int k = 0; k < 2; ++k)
-        if (along_[k].row == j) return k;
-    // The slot not holding `other`, the row needed beside this one.
-    return along_[0].row == other ? 1 : 0;
-}
-
-const Premul* ImageShader::along(int k, int j, int lo, int hi) const {
-    Along& a = along_[std::size_t(k)];
+const Premul* ImageShader::along(int j, int keep, int lo, int hi) const {
+    // The slot holding row j, else the one not holding `keep`, the row
+    // sampled beside it.
+    const std::size_t k = along_[0].row == j      ? 0
+                          : along_[1].row == j    ? 1
+                          : along_[0].row == keep ? 1
+                                                  : 0;
+    Along& a = along_[k];
     const std::size_t size = columns_.size();
     if (a.pixels.size() < size) a.pixels.resize(size);
     const Premul* row = image_->pixels.data() + std::size_t(j) * std::size_t(image_->width);
@@ -216,8 +215,8 @@ void ImageShader::shade(int x, int y, int n, Premul* out) const {
     const long long first = static_cast<long long>(x) - columns_x0_;
     if (level && first >= 0 && first + n <= static_cast<long long>(columns_.size())) {
         const int lo = int(first), hi = lo + n;
-        const Premul* top = along(ay_slot(row_axis.i0, row_axis.i1), row_axis.i0, lo, hi);
-        const Premul* bottom = along(ay_slot(row_axis.i1, row_axis.i0), row_axis.i1, lo, hi);
+        const Premul* top = along(row_axis.i0, row_axis.i1, lo, hi);
+        const Premul* bottom = along(row_axis.i1, row_axis.i0, lo, hi);
         for (int i = 0; i < n; ++i) out[i] = scaled(lerp(top[lo + i], bottom[lo + i], row_axis.t));
         return;
     }

@@ -50,7 +50,8 @@
 namespace casteljau {
 
 /// An image ready to shade device pixels: the device -> image map and the
-/// sampling options. The image must outlive the shader's use.
+/// sampling options. The image must outlive the shader's use. One thread a
+/// shader: shade() keeps the image rows it sampled for the next row.
 class ImageShader {
   public:
     /// `to_device` maps image pixel space to device pixels. Samples by
@@ -118,10 +119,9 @@ class ImageShader {
         int row = -1, lo = 0, hi = 0;
     };
     mutable std::array<Along, 2> along_;
-    /// The slot holding image row j, else the one to fill with it, keeping `other`.
-    int ay_slot(int j, int other) const;
-    /// Slot k holding image row j sampled along columns [lo, hi) of columns_.
-    const Premul* along(int k, int j, int lo, int hi) const;
+    /// Image row j sampled along columns [lo, hi) of columns_ (index by
+    /// column), from the slot holding it or the one not holding row `keep`.
+    const Premul* along(int j, int keep, int lo, int hi) const;
 };
 
 /// Image compositing.

@@ -9,7 +9,11 @@
 // to 8 bits (opaque8, made by find_opaque8): where an 8-bit canvas takes
 // such a pixel at coverage 1 and opacity 1, source-over gives
 // round(255 S + 0 D) = quantize(S), those very bytes (pixel8.h), so they are
-// copied instead of composited (ImageShader::store_opaque).
+// copied instead of composited (ImageShader::store_opaque). Pattern tiles
+// carry it (drawn on the pixel grid, mostly at their own resolution);
+// decoded images do not: most are opaque and drawn scaled, and the copy
+// would be a quarter more memory than the 16 bytes a pixel the image
+// limits count (SvgOptions::max_image_pixels).
 #pragma once
 
 #include "casteljau/paint/color.h"

@@ -20,7 +20,8 @@
 // mode left out, or not at all when it is clipped or masked (a degraded
 // picture, not an unbounded one, and never one that shows what a clip hides). Pattern tiles are at
 // most kMaxTilePixels each, and a renderer keeps at most kMaxTilePixels of them
-// (tile_cache.h), one renderer per pattern nesting level.
+// (tile_cache.h; an opaque tile's 8-bit copy, a quarter more, besides), one
+// renderer per pattern nesting level.
 #pragma once
 
 #include "casteljau/filter/filter_image.h"
