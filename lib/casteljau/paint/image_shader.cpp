@@ -92,8 +92,11 @@ void lerp_columns(const Premul* row, const Axis* columns, int from, int to, Prem
 #if defined(CASTELJAU_X86_DISPATCH)
 /// lerp_columns two columns a vector (AVX), lane by lane the same
 /// arithmetic; the last odd column goes to the form above.
+[[gnu::target("avx2")]] __m256 pixel_pair2(const Premul* p, const Premul* q) {
+    return _mm256_set_m128(_mm_loadu_ps(&q->r), _mm_loadu_ps(&p->r));
+}
 [[gnu::target("avx2")]] __m256 pixel_pair(const Premul* row, int i, int j) {
-    return _mm256_set_m128(_mm_loadu_ps(&row[j].r), _mm_loadu_ps(&row[i].r));
+    return pixel_pair2(row + i, row + j);
 }
 
 [[gnu::target("avx2")]] void lerp_columns_avx2(const Premul* row, const Axis* columns, int from,
@@ -106,6 +109,69 @@ void lerp_columns(const Premul* row, const Axis* columns, int from, int to, Prem
         _mm256_storeu_ps(&out[c].r, _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), t)));
     }
     lerp_columns(row, columns, c, to, out);
+}
+
+// AVX pieces of shade_turned_avx2 (GCC does not compile AVX intrinsics in
+// lambdas of a function that has the target, hence functions).
+/// PadAxes of four coordinates: the pixels and weights along one axis.
+[[gnu::target("avx2")]] void pad_axes4(__m256d v, int size, int* i0, int* i1, float* t) {
+    const __m256d u =
+        _mm256_min_pd(_mm256_max_pd(_mm256_sub_pd(v, _mm256_set1_pd(0.5)), _mm256_setzero_pd()),
+                      _mm256_set1_pd(size - 1.0));
+    const __m128i i = _mm256_cvttpd_epi32(u);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(i0), i);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(i1),
+                     _mm_min_epi32(_mm_add_epi32(i, _mm_set1_epi32(1)), _mm_set1_epi32(size - 1)));
+    _mm_storeu_ps(t, _mm256_cvtpd_ps(_mm256_sub_pd(u, _mm256_cvtepi32_pd(i))));
+}
+/// a cx + c_cy + e, c_cy being c cy.
+[[gnu::target("avx2")]] __m256d mapped4(__m256d cx, double a, double c_cy, double e) {
+    return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(a), cx), _mm256_set1_pd(c_cy)),
+                         _mm256_set1_pd(e));
+}
+/// lerp() of two pixels a vector.
+[[gnu::target("avx2")]] __m256 lerp2(__m256 a, __m256 b, __m256 t) {
+    return _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), t));
+}
+/// Weights t[k] (low half) and t[k + 1] (high half).
+[[gnu::target("avx2")]] __m256 weight_pair(const float* t, int k) {
+    return _mm256_set_m128(_mm_set1_ps(t[k + 1]), _mm_set1_ps(t[k]));
+}
+
+/// The padded bilinear samples of a turned map (PadAxes and the sample of
+/// shade()'s SSE2 loop) four device pixels a pass, from pixel x of row cy:
+/// the four sample points in one vector of doubles, each pair of pixels'
+/// lerps in one vector of floats, lane by lane the same operations, so the
+/// same bits. Returns how many of the n pixels it shaded (a multiple of 4).
+[[gnu::target("avx2")]] int shade_turned_avx2(const RasterImage& im, const Affine& m, int x,
+                                              double cy, int n, float opacity, Premul* out) {
+    const Premul* px = im.pixels.data();
+    const std::size_t w = std::size_t(im.width);
+    const __m256 o = _mm256_set1_ps(opacity);
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        const __m256d cx = _mm256_add_pd(
+            _mm256_cvtepi32_pd(_mm_add_epi32(_mm_set1_epi32(x + i), _mm_setr_epi32(0, 1, 2, 3))),
+            _mm256_set1_pd(0.5));
+        alignas(16) int x0[4], x1[4], y0[4], y1[4];
+        alignas(16) float tx[4], ty[4];
+        pad_axes4(mapped4(cx, m.a, m.c * cy, m.e), im.width, x0, x1, tx);
+        pad_axes4(mapped4(cx, m.b, m.d * cy, m.f), im.height, y0, y1, ty);
+        for (int k = 0; k < 4; k += 2) {
+            const Premul* r0 = px + std::size_t(y0[k]) * w;
+            const Premul* r1 = px + std::size_t(y0[k + 1]) * w;
+            const Premul* s0 = px + std::size_t(y1[k]) * w;
+            const Premul* s1 = px + std::size_t(y1[k + 1]) * w;
+            const __m256 wx = weight_pair(tx, k);
+            const __m256 top = lerp2(pixel_pair2(r0 + x0[k], r1 + x0[k + 1]),
+                                     pixel_pair2(r0 + x1[k], r1 + x1[k + 1]), wx);
+            const __m256 bottom = lerp2(pixel_pair2(s0 + x0[k], s1 + x0[k + 1]),
+                                        pixel_pair2(s0 + x1[k], s1 + x1[k + 1]), wx);
+            _mm256_storeu_ps(&out[i + k].r,
+                             _mm256_mul_ps(lerp2(top, bottom, weight_pair(ty, k)), o));
+        }
+    }
+    return i;
 }
 
 /// lerp_rows two pixels a vector (AVX): the same subtraction, products and
@@ -287,6 +353,9 @@ void ImageShader::shade(int x, int y, int n, Premul* out) const {
     // Padded and turned: two pixels' axes at a time (the turned image's
     // frame 1.07 -> 0.84x Cairo's time); tiling's floor-mod has no SSE2 form.
     if (!repeat_ && !level) {
+#if defined(CASTELJAU_X86_DISPATCH)
+        if (use_avx2) i = shade_turned_avx2(im, m, x, cy, n, opacity_, out);
+#endif
         const auto sample = [&](const Axis& ax, const Axis& ay) {
             return scaled(lerp(lerp(pixel(ax.i0, ay.i0), pixel(ax.i1, ay.i0), ax.t),
                                lerp(pixel(ax.i0, ay.i1), pixel(ax.i1, ay.i1), ax.t), ay.t));
