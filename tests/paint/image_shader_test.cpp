@@ -402,6 +402,103 @@ TEST(ImageShader, OpaqueImagesStoreTheBytesTheirCompositeGives) {
     EXPECT_FALSE(sh.store_opaque(0, 0, 4, out)) << "no 8-bit copy";
 }
 
+// Where a scaled (level, tabulated) opaque image is drawn at opacity 1,
+// spans of coverage 1 on an 8-bit canvas store its quantized samples: the
+// canvas comes out as the composite of each pixel's sample (from a shader
+// that samples each pixel alone), byte for byte, over a translucent
+// background, scaled up, down and mirrored, tiled and padded. A translucent
+// pixel in the image rows a span samples, or an opacity below 1, and
+// nothing is stored, and the span composites as before.
+TEST(ImageShader, LevelOpaqueImagesStoreTheBytesTheirCompositeGives) {
+    RasterImage im = random_image(11, 9, 59);
+    for (Premul& p : im.pixels) p = {p.r, p.g, p.b, 1.0f};
+    RasterImage one_translucent = im; // its row 5 at half alpha
+    for (int i = 5 * 11; i < 6 * 11; ++i) {
+        Premul& p = one_translucent.pixels[std::size_t(i)];
+        p = {p.r * 0.5f, p.g * 0.5f, p.b * 0.5f, 0.5f};
+    }
+    const Affine maps[] = {
+        Affine::translate({3.3, -2.1}) * Affine::scale(2.7, 1.9),
+        Affine::translate({40.5, 30.25}) * Affine::scale(-1.5, -3.25),
+        Affine::translate({1, 2}) * Affine::scale(0.37, 5),
+        Affine::translate({0.5, 0.5}),
+    };
+    const Premul bg{0.1f, 0.3f, 0.2f, 0.5f};
+    testing::Rng rng(61);
+    for (const RasterImage* image : {&im, &one_translucent})
+        for (const Affine& m : maps)
+            for (const bool repeat : {false, true})
+                for (const float opacity : {1.0f, 0.75f}) {
+                    ImageShader plain, tabulated;
+                    ASSERT_TRUE(plain.prepare(*image, m, opacity, true, repeat));
+                    ASSERT_TRUE(tabulated.prepare(*image, m, opacity, true, repeat));
+                    tabulated.tabulate(-40, 80);
+                    int stored = 0;
+                    for (int y = -12; y < 40; ++y) {
+                        const int x = rng.integer(-40, 40), n = rng.integer(1, 40);
+                        // The canvas: columns [-40, 80) of row y.
+                        Canvas8 canvas(120, 1, -40, y), expected(120, 1, -40, y);
+                        canvas.fill(bg);
+                        expected.fill(bg);
+                        ImageSpanPainter<Premul8> painter(canvas, tabulated);
+                        std::vector<Premul8> bytes(static_cast<std::size_t>(n));
+                        stored += tabulated.store_opaque(x, y, n, bytes.data());
+                        painter.span({y, x, n, nullptr, 1.0f});
+                        for (int i = 0; i < n; ++i)
+                            blend_over(expected.row(0)[x + i + 40], plain.at(x + i, y), 1);
+                        for (int i = 0; i < 120; ++i)
+                            ASSERT_EQ(canvas.row(0)[i], expected.row(0)[i])
+                                << (repeat ? "repeat" : "pad") << " opacity " << opacity
+                                << " map e " << m.e << " row " << where(x, y) << " n " << n
+                                << " column " << i - 40;
+                    }
+                    // 52 rows: the device rows beside image row 5 sample
+                    // a translucent row, the others only opaque ones.
+                    if (opacity < 1) {
+                        EXPECT_EQ(stored, 0) << "opacity " << opacity;
+                    } else if (image == &im) {
+                        EXPECT_EQ(stored, 52) << "every span of an opaque image";
+                    } else {
+                        EXPECT_TRUE(stored > 0 && stored < 52) << stored << " map e " << m.e;
+                    }
+                }
+}
+
+// The image rows kept for the next span know whether the columns added on
+// either side are opaque: one translucent pixel reached by extending the
+// columns held, left or right, and the span is composited, not stored.
+TEST(ImageShader, KeptRowsGrownOverATranslucentPixelAreNotStored) {
+    RasterImage im = random_image(11, 9, 67);
+    for (Premul& p : im.pixels) p = {p.r, p.g, p.b, 1.0f};
+    im.pixels[5 * 11 + 4] = {0.2f, 0.1f, 0.1f, 0.5f}; // column 4, row 5
+    // Scaled by 3: device columns 12 to 14 lie on image column 4, and
+    // device row 16 samples image rows 4 and 5.
+    const Affine m = Affine::scale(3);
+    const auto check = [&](const std::pair<int, int>& first, const std::pair<int, int>& second) {
+        ImageShader plain, sh;
+        ASSERT_TRUE(plain.prepare(im, m, 1, true, false));
+        ASSERT_TRUE(sh.prepare(im, m, 1, true, false));
+        sh.tabulate(0, 60);
+        std::vector<Premul8> bytes(60);
+        EXPECT_TRUE(sh.store_opaque(first.first, 16, first.second - first.first, bytes.data()))
+            << "columns " << first.first << ".." << first.second;
+        EXPECT_FALSE(sh.store_opaque(second.first, 16, second.second - second.first, bytes.data()))
+            << "columns " << second.first << ".." << second.second;
+        Canvas8 canvas(60, 1, 0, 16), expected(60, 1, 0, 16);
+        canvas.fill({0.1f, 0.3f, 0.2f, 0.5f});
+        expected.fill({0.1f, 0.3f, 0.2f, 0.5f});
+        ImageSpanPainter<Premul8>(canvas, sh)
+            .span({16, second.first, second.second - second.first, nullptr, 1.0f});
+        for (int x = second.first; x < second.second; ++x)
+            blend_over(expected.row(0)[x], plain.at(x, 16), 1);
+        for (int x = 0; x < 60; ++x)
+            EXPECT_EQ(canvas.row(0)[x], expected.row(0)[x]) << "column " << x;
+    };
+    check({30, 40}, {5, 35});  // grown to the left
+    check({0, 10}, {0, 20});   // grown to the right
+    check({30, 40}, {10, 16}); // apart from the columns held
+}
+
 TEST(ImageShader, TabulatedColumnsShadeTheSameBits) {
     // A map that keeps rows level and columns upright: each column's
     // horizontal half of the sample, tabulated once, and each image row

@@ -81,12 +81,23 @@ void lerp_rows(const Premul* top, const Premul* bottom, float t, float opacity, 
 }
 
 /// out[c] = lerp(row[i0], row[i1], t) of column c's axis, for c in
-/// [from, to): an image row sampled along the tabulated columns.
-void lerp_columns(const Premul* row, const Axis* columns, int from, int to, Premul* out) {
+/// [from, to): an image row sampled along the tabulated columns. Returns
+/// whether every sample's alpha is exactly 1.
+bool lerp_columns(const Premul* row, const Axis* columns, int from, int to, Premul* out) {
+    bool opaque = true;
     for (int c = from; c < to; ++c) {
         const Axis& ax = columns[c];
         out[c] = lerp(row[ax.i0], row[ax.i1], ax.t);
+        opaque = opaque && out[c].a == 1.0f;
     }
+    return opaque;
+}
+
+/// out[i] = quantize(lerp(top[i], bottom[i], t)), for i in [0, n): opaque
+/// samples at opacity 1 as source-over at coverage 1 stores them
+/// (ImageShader::store_opaque).
+void quantize_rows(const Premul* top, const Premul* bottom, float t, int n, Premul8* out) {
+    for (int i = 0; i < n; ++i) out[i] = quantize(lerp(top[i], bottom[i], t));
 }
 
 #if defined(CASTELJAU_X86_DISPATCH)
@@ -99,16 +110,22 @@ void lerp_columns(const Premul* row, const Axis* columns, int from, int to, Prem
     return pixel_pair2(row + i, row + j);
 }
 
-[[gnu::target("avx2")]] void lerp_columns_avx2(const Premul* row, const Axis* columns, int from,
+[[gnu::target("avx2")]] bool lerp_columns_avx2(const Premul* row, const Axis* columns, int from,
                                                int to, Premul* out) {
+    const __m256 one = _mm256_set1_ps(1.0f);
+    __m256 ones = _mm256_castsi256_ps(_mm256_set1_epi32(-1)); // lanes equal to 1 so far
     int c = from;
     for (; c + 2 <= to; c += 2) {
         const Axis &x0 = columns[c], &x1 = columns[c + 1];
         const __m256 a = pixel_pair(row, x0.i0, x1.i0), b = pixel_pair(row, x0.i1, x1.i1);
         const __m256 t = _mm256_set_m128(_mm_set1_ps(x1.t), _mm_set1_ps(x0.t));
-        _mm256_storeu_ps(&out[c].r, _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), t)));
+        const __m256 v = _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), t));
+        _mm256_storeu_ps(&out[c].r, v);
+        ones = _mm256_and_ps(ones, _mm256_cmp_ps(v, one, _CMP_EQ_OQ));
     }
-    lerp_columns(row, columns, c, to, out);
+    // Lanes 3 and 7: the two pixels' alphas.
+    const bool opaque = (_mm256_movemask_ps(ones) & 0x88) == 0x88;
+    return lerp_columns(row, columns, c, to, out) && opaque;
 }
 
 // AVX pieces of shade_turned_avx2 (GCC does not compile AVX intrinsics in
@@ -189,6 +206,29 @@ void lerp_columns(const Premul* row, const Axis* columns, int from, int to, Prem
     }
     lerp_rows(top + i, bottom + i, t, opacity, n - i, out + i);
 }
+
+/// quantize_rows four pixels a pass: lerp_rows_avx2's lerps, then
+/// quantize's product, rounding and saturating packs, four pixels at once.
+[[gnu::target("avx2")]] void quantize_rows_avx2(const Premul* top, const Premul* bottom, float t,
+                                                int n, Premul8* out) {
+    const __m256 tt = _mm256_set1_ps(t), s = _mm256_set1_ps(255.0f);
+    int i = 0;
+    for (; i + 4 <= n; i += 4) {
+        __m256i q[2];
+        for (int k = 0; k < 2; ++k) {
+            const __m256 a = _mm256_loadu_ps(&top[i + 2 * k].r);
+            const __m256 b = _mm256_loadu_ps(&bottom[i + 2 * k].r);
+            const __m256 c = _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), tt));
+            q[k] = _mm256_cvtps_epi32(_mm256_mul_ps(c, s));
+        }
+        const __m128i p01 =
+            _mm_packs_epi32(_mm256_castsi256_si128(q[0]), _mm256_extracti128_si256(q[0], 1));
+        const __m128i p23 =
+            _mm_packs_epi32(_mm256_castsi256_si128(q[1]), _mm256_extracti128_si256(q[1], 1));
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(out + i), _mm_packus_epi16(p01, p23));
+    }
+    quantize_rows(top + i, bottom + i, t, n - i, out + i);
+}
 #endif
 
 } // namespace
@@ -235,7 +275,7 @@ void ImageShader::tabulate(int x0, int x1) {
             bilinear_axis((m * Point{x + 0.5, 0.5}).x, image_->width, inv_w_, repeat_);
 }
 
-const Premul* ImageShader::along(int j, int keep, int lo, int hi) const {
+const ImageShader::Along& ImageShader::along(int j, int keep, int lo, int hi) const {
     // The slot holding row j, else the one not holding `keep`, the row
     // sampled beside it.
     const std::size_t k = along_[0].row == j      ? 0
@@ -250,16 +290,37 @@ const Premul* ImageShader::along(int j, int keep, int lo, int hi) const {
 #if defined(CASTELJAU_X86_DISPATCH)
         if (use_avx2) return lerp_columns_avx2(row, columns_.data(), from, to, a.pixels.data());
 #endif
-        lerp_columns(row, columns_.data(), from, to, a.pixels.data());
+        return lerp_columns(row, columns_.data(), from, to, a.pixels.data());
     };
     if (a.row != j || hi < a.lo || lo > a.hi) { // another row, or columns apart from those held
-        fill(lo, hi);
+        a.opaque = fill(lo, hi);
         a.row = j, a.lo = lo, a.hi = hi;
     } else { // the same row: the columns on either side of those held
-        if (lo < a.lo) fill(lo, a.lo), a.lo = lo;
-        if (hi > a.hi) fill(a.hi, hi), a.hi = hi;
+        if (lo < a.lo) a.opaque = fill(lo, a.lo) && a.opaque, a.lo = lo;
+        if (hi > a.hi) a.opaque = fill(a.hi, hi) && a.opaque, a.hi = hi;
     }
-    return a.pixels.data();
+    return a;
+}
+
+bool ImageShader::level_rows(int x, int y, int n, LevelRows& r) const {
+    // b == 0: p.y = b (x + 0.5) + d cy + f is the same for every x (b x is
+    // +-0, and adding a zero changes no value but a zero's sign, which no
+    // sample below tells apart). Taken from the same expression as each
+    // pixel's p.y (not d cy + f), so that a build that fuses multiply-adds
+    // rounds it the same way.
+    const Affine& m = inverse_;
+    if (m.b != 0) return false;
+    // In long long: x + n may be past int's range (x is any pixel at()).
+    const long long first = static_cast<long long>(x) - columns_x0_;
+    if (first < 0 || first + n > static_cast<long long>(columns_.size())) return false;
+    const Axis row_axis =
+        bilinear_axis((m * Point{x + 0.5, y + 0.5}).y, image_->height, inv_h_, repeat_);
+    const int lo = int(first), hi = lo + n;
+    const Along& top = along(row_axis.i0, row_axis.i1, lo, hi);
+    const Along& bottom = along(row_axis.i1, row_axis.i0, lo, hi);
+    r = {top.pixels.data() + lo, bottom.pixels.data() + lo, row_axis.t,
+         top.opaque && bottom.opaque};
+    return true;
 }
 
 Premul ImageShader::at(int x, int y) const {
@@ -307,9 +368,23 @@ void ImageShader::copy_row(int x, int y, int n, Premul* out) const {
 }
 
 bool ImageShader::store_opaque(int x, int y, int n, Premul8* out) const {
-    if (!aligned_ || opacity_ != 1 || image_->opaque8.empty()) return false;
-    copy_stretches(image_->opaque8, x, y, n,
-                   [&](const Premul8* from, int m, int k) { std::copy(from, from + m, out + k); });
+    if (opacity_ != 1) return false;
+    if (aligned_) {
+        if (image_->opaque8.empty()) return false;
+        copy_stretches(image_->opaque8, x, y, n, [&](const Premul8* from, int m, int k) {
+            std::copy(from, from + m, out + k);
+        });
+        return true;
+    }
+    LevelRows r;
+    if (!smooth_ || !level_rows(x, y, n, r) || !r.opaque) return false;
+#if defined(CASTELJAU_X86_DISPATCH)
+    if (use_avx2) {
+        quantize_rows_avx2(r.top, r.bottom, r.t, n, out);
+        return true;
+    }
+#endif
+    quantize_rows(r.top, r.bottom, r.t, n, out);
     return true;
 }
 
@@ -329,25 +404,17 @@ void ImageShader::shade(int x, int y, int n, Premul* out) const {
         }
         return;
     }
-    // b == 0: p.y = b (x + 0.5) + d cy + f is the same for every x (b x is
-    // +-0, and adding a zero changes no value but a zero's sign, which no
-    // sample below tells apart). Taken from the same expression as each
-    // pixel's p.y (not d cy + f), so that a build that fuses multiply-adds
-    // rounds it the same way.
+    if (LevelRows r; level_rows(x, y, n, r)) {
+#if defined(CASTELJAU_X86_DISPATCH)
+        if (use_avx2) return lerp_rows_avx2(r.top, r.bottom, r.t, opacity_, n, out);
+#endif
+        return lerp_rows(r.top, r.bottom, r.t, opacity_, n, out);
+    }
+    // Level (b == 0): the row's vertical half of the sample is the same for
+    // every pixel (level_rows).
     const bool level = m.b == 0;
     const Axis row_axis =
         level ? bilinear_axis((m * Point{x + 0.5, cy}).y, im.height, inv_h_, repeat_) : Axis{};
-    // In long long: x + n may be past int's range (x is any pixel at()).
-    const long long first = static_cast<long long>(x) - columns_x0_;
-    if (level && first >= 0 && first + n <= static_cast<long long>(columns_.size())) {
-        const int lo = int(first), hi = lo + n;
-        const Premul* top = along(row_axis.i0, row_axis.i1, lo, hi);
-        const Premul* bottom = along(row_axis.i1, row_axis.i0, lo, hi);
-#if defined(CASTELJAU_X86_DISPATCH)
-        if (use_avx2) return lerp_rows_avx2(top + lo, bottom + lo, row_axis.t, opacity_, n, out);
-#endif
-        return lerp_rows(top + lo, bottom + lo, row_axis.t, opacity_, n, out);
-    }
     int i = 0;
 #if defined(__SSE2__)
     // Padded and turned: two pixels' axes at a time (the turned image's
