@@ -1,6 +1,7 @@
 // Gradients: the parameter t at known points against the SVG formulas, each
 // spread method, unpremultiplied and linear-light interpolation, and the SVG
 // side (units, gradientTransform, href inheritance, bad references).
+#include "casteljau/paint/canvas.h"
 #include "casteljau/paint/gradient.h"
 #include "casteljau/render/renderer.h"
 #include "casteljau/svg/color.h"
@@ -217,6 +218,44 @@ TEST(Gradient, RowsShadeAsEachPixelAlone) {
         for (int i = 0; i < n; ++i) {
             const Premul p = row[std::size_t(i)], q = sh.at(x + i, y);
             EXPECT_TRUE(p.r == q.r && p.g == q.g && p.b == q.b && p.a == q.a)
+                << "trial " << trial << ", pixel " << i << " of " << n << " from (" << x << ", "
+                << y << ")";
+        }
+    }
+}
+
+// Where every stop is opaque and the opacity 1, spans of coverage 1 on an
+// 8-bit canvas store the gradient's colors quantized: the canvas comes out
+// as each pixel's color composited over a translucent background, byte for
+// byte, for every kind and spread, with and without a focal circle, and
+// geometry whose parameter is NaN. A translucent stop, or an opacity below
+// 1, and nothing is stored (the span composites as before).
+TEST(Gradient, OpaqueGradientsStoreTheBytesTheirCompositeGives) {
+    testing::Rng rng(23);
+    const Premul bg{0.1f, 0.3f, 0.2f, 0.5f};
+    for (int trial = 0; trial < 90; ++trial) {
+        const bool opaque = trial % 5 != 4, full = trial % 7 != 6;
+        std::vector<GradientStop> stops = {
+            {0, {0.9f, 0.1f, 0.2f, 1}}, {0.6f, {0.1f, 0.3f, 1, 1}}, {1, {0, 1, 0, 1}}};
+        if (!opaque) stops[1].color.a = 0.5f;
+        Gradient g = random_gradient(rng, trial, stops);
+        if (trial % 15 == 14) g.p1 = {-1e308, 0}, g.p2 = {1e308, 1}; // t is NaN
+        GradientShader sh;
+        ASSERT_TRUE(sh.prepare(g, random_map(rng, trial), full ? 1.0f : 0.8f));
+        const int x = rng.integer(-100, 200), y = rng.integer(-100, 200), n = rng.integer(1, 300);
+        std::vector<Premul8> bytes(static_cast<std::size_t>(n));
+        const bool stored = sh.store_opaque(x, y, n, bytes.data());
+        EXPECT_EQ(stored, opaque && full) << "trial " << trial;
+        Canvas8 canvas(n, 1, x, y), expected(n, 1, x, y);
+        canvas.fill(bg);
+        expected.fill(bg);
+        GradientSpanPainter<Premul8>(canvas, sh).span({y, x, n, nullptr, 1.0f});
+        for (int i = 0; i < n; ++i) {
+            blend_over(expected.row(0)[i], sh.at(x + i, y), 1);
+            if (stored) {
+                EXPECT_EQ(bytes[std::size_t(i)], expected.row(0)[i]) << "pixel " << i;
+            }
+            ASSERT_EQ(canvas.row(0)[i], expected.row(0)[i])
                 << "trial " << trial << ", pixel " << i << " of " << n << " from (" << x << ", "
                 << y << ")";
         }

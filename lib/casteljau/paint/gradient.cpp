@@ -132,6 +132,10 @@ void GradientShader::build_table(const Gradient& g, float opacity, bool linear_l
         if (linear_light) c = {to_srgb(c.r), to_srgb(c.g), to_srgb(c.b), c.a};
         lut_[std::size_t(i)] = premultiply(c, opacity);
     }
+    lut_opaque_ = std::all_of(lut_.begin(), lut_.end(), [](const Premul& c) { return c.a == 1; });
+    if (lut_opaque_)
+        std::transform(lut_.begin(), lut_.end(), lut8_.begin(),
+                       [](const Premul& c) { return quantize(c); });
 }
 
 double GradientShader::parameter(Point p) const {
@@ -191,8 +195,8 @@ void entries_of(const double* t, int m, int* e) {
 
 /// out[i] = the color at parameter t_i for i in [0, n), params(i0, m, t)
 /// giving t_i0 to t_(i0 + m - 1) into t.
-template <Spread S, class Params>
-[[gnu::always_inline]] inline void look_up(const Premul* lut, int n, Premul* out, Params params) {
+template <Spread S, class P, class Params>
+[[gnu::always_inline]] inline void look_up(const P* lut, int n, P* out, Params params) {
     std::array<double, kBlock> t;
     std::array<int, kBlock> e;
     for (int i0 = 0; i0 < n; i0 += kBlock) {
@@ -205,20 +209,20 @@ template <Spread S, class Params>
 
 } // namespace
 
-template <Spread S>
-void GradientShader::shade_linear(int x, int y, int n, Premul* out) const {
+template <Spread S, class P>
+void GradientShader::shade_linear(int x, int y, int n, const P* lut, P* out) const {
     // t is affine in device space: one multiply-add a pixel, no division.
     const double row = linear_.y * (y + 0.5) + linear_.t0, dx = linear_.x;
-    look_up<S>(lut_.data(), n, out, [&](int i0, int m, double* t) {
+    look_up<S>(lut, n, out, [&](int i0, int m, double* t) {
         for (int i = 0; i < m; ++i) t[i] = dx * (x + i0 + i + 0.5) + row;
     });
 }
 
-template <Spread S, bool Ring>
-void GradientShader::shade_radial(int x, int y, int n, Premul* out) const {
+template <Spread S, bool Ring, class P>
+void GradientShader::shade_radial(int x, int y, int n, const P* lut, P* out) const {
     const Gradient& g = *g_;
     if (g.radius <= 0) { // zero radius: the last stop (13.2.3)
-        std::fill_n(out, n, lut_[entry(spread(1.0, S))]);
+        std::fill_n(out, n, lut[entry(spread(1.0, S))]);
         return;
     }
     // The formulas above with d = inverse (X, Y) - f: along a row d is
@@ -233,7 +237,7 @@ void GradientShader::shade_radial(int x, int y, int n, Premul* out) const {
     const double r0dr = r.r0 * r.dr, r0_sq = r.r0 * r.r0, scale = r.t1 * inv_a;
     const double cy = y + 0.5;
     const Vec2 row{m.c * cy + m.e - r.focal.x, m.d * cy + m.f - r.focal.y};
-    look_up<S>(lut_.data(), n, out, [&](int i0, int count, double* t) {
+    look_up<S>(lut, n, out, [&](int i0, int count, double* t) {
         int i = 0;
 #if defined(__SSE2__)
         // The loop below two pixels at a time, operation for operation (maxpd
@@ -271,22 +275,33 @@ void GradientShader::shade_radial(int x, int y, int n, Premul* out) const {
     });
 }
 
-template <Spread S>
-void GradientShader::shade_spread(int x, int y, int n, Premul* out) const {
-    if (g_->kind == Gradient::Kind::Linear) return shade_linear<S>(x, y, n, out);
-    if (radial_.r0 > 0 || radial_.t1 != 1) return shade_radial<S, true>(x, y, n, out);
-    shade_radial<S, false>(x, y, n, out);
+template <Spread S, class P>
+void GradientShader::shade_spread(int x, int y, int n, const P* lut, P* out) const {
+    if (g_->kind == Gradient::Kind::Linear) return shade_linear<S>(x, y, n, lut, out);
+    if (radial_.r0 > 0 || radial_.t1 != 1) return shade_radial<S, true>(x, y, n, lut, out);
+    shade_radial<S, false>(x, y, n, lut, out);
+}
+
+template <class P>
+void GradientShader::shade_from(int x, int y, int n, const P* lut, P* out) const {
+    switch (g_->spread) {
+    case Spread::Pad:
+        return shade_spread<Spread::Pad>(x, y, n, lut, out);
+    case Spread::Repeat:
+        return shade_spread<Spread::Repeat>(x, y, n, lut, out);
+    case Spread::Reflect:
+        return shade_spread<Spread::Reflect>(x, y, n, lut, out);
+    }
 }
 
 void GradientShader::shade(int x, int y, int n, Premul* out) const {
-    switch (g_->spread) {
-    case Spread::Pad:
-        return shade_spread<Spread::Pad>(x, y, n, out);
-    case Spread::Repeat:
-        return shade_spread<Spread::Repeat>(x, y, n, out);
-    case Spread::Reflect:
-        return shade_spread<Spread::Reflect>(x, y, n, out);
-    }
+    shade_from(x, y, n, lut_.data(), out);
+}
+
+bool GradientShader::store_opaque(int x, int y, int n, Premul8* out) const {
+    if (!lut_opaque_) return false;
+    shade_from(x, y, n, lut8_.data(), out);
+    return true;
 }
 
 } // namespace casteljau

@@ -32,6 +32,7 @@
 
 #include "casteljau/geom/affine.h"
 #include "casteljau/paint/color.h"
+#include "casteljau/paint/pixel8.h"
 
 #include <array>
 #include <vector>
@@ -88,6 +89,12 @@ class GradientShader {
     Premul at(int x, int y) const;
     /// at(x + i, y) into out[i] for i in [0, n): the same values, a row at a time.
     void shade(int x, int y, int n, Premul* out) const;
+    /// Where every color of the table is opaque (the stops' and the opacity's
+    /// alphas all 1): writes into out the bytes source-over of pixels
+    /// [x, x + n) of row y at coverage 1 gives on an 8-bit canvas, whatever
+    /// was there (round(255 S + 0 D): the table quantized), and returns
+    /// true; else writes nothing and returns false (ShadedSpanPainter).
+    bool store_opaque(int x, int y, int n, Premul8* out) const;
     /// The gradient parameter after spread, in [0, 1], at device point p.
     double parameter(Point p) const;
 
@@ -97,12 +104,16 @@ class GradientShader {
         double x = 0, y = 0, t0 = 0; ///< t = x X + y Y + t0
     };
     void build_table(const Gradient& g, float opacity, bool linear_light);
-    template <Spread S>
-    void shade_linear(int x, int y, int n, Premul* out) const;
-    template <Spread S, bool Ring>
-    void shade_radial(int x, int y, int n, Premul* out) const;
-    template <Spread S>
-    void shade_spread(int x, int y, int n, Premul* out) const;
+    // Shading into colors from a table of them: lut_ into Premul, lut8_
+    // into Premul8.
+    template <Spread S, class P>
+    void shade_linear(int x, int y, int n, const P* lut, P* out) const;
+    template <Spread S, bool Ring, class P>
+    void shade_radial(int x, int y, int n, const P* lut, P* out) const;
+    template <Spread S, class P>
+    void shade_spread(int x, int y, int n, const P* lut, P* out) const;
+    template <class P>
+    void shade_from(int x, int y, int n, const P* lut, P* out) const;
 
     const Gradient* g_ = nullptr;
     /// What the table was built from: compared by value, so a table is never
@@ -114,6 +125,9 @@ class GradientShader {
     LinearForm linear_;
     RadialForm radial_;
     std::array<Premul, kGradientLut> lut_{};
+    /// lut_ quantized where every entry is opaque (lut_opaque_), for store_opaque.
+    std::array<Premul8, kGradientLut> lut8_{};
+    bool lut_opaque_ = false;
 };
 
 } // namespace casteljau
