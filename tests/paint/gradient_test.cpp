@@ -164,13 +164,14 @@ Affine random_map(testing::Rng& rng, int trial) {
     return trial % 3 ? Affine::identity() : m;
 }
 
-// A row of 1 to 300 pixels shaded at once, from a random place.
+// A row of `shortest` to 300 pixels shaded at once, from a random place.
 struct ShadedRow {
     int x, y;
     std::vector<Premul> pixels;
 };
-ShadedRow shade_random_row(const GradientShader& sh, testing::Rng& rng) {
-    const int x = rng.integer(-100, 200), y = rng.integer(-100, 200), n = rng.integer(1, 300);
+ShadedRow shade_random_row(const GradientShader& sh, testing::Rng& rng, int shortest = 1) {
+    const int x = rng.integer(-100, 200), y = rng.integer(-100, 200);
+    const int n = rng.integer(shortest, 300);
     ShadedRow r{x, y, std::vector<Premul>(std::size_t(n))};
     sh.shade(x, y, n, r.pixels.data());
     return r;
@@ -210,10 +211,13 @@ TEST(Gradient, RowsShadeAsEachPixelAlone) {
         const std::vector<GradientStop> stops = {
             {0, {0.9f, 0.1f, 0.2f, 1}}, {0.6f, {0.1f, 0.3f, 1, 0.5f}}, {1, {0, 1, 0, 1}}};
         Gradient g = random_gradient(rng, trial, stops);
-        if (trial % 15 == 14) g.p1 = {-1e308, 0}, g.p2 = {1e308, 1}; // t is NaN
+        // t is NaN on every 15th trial, every spread in turn (pad first), on
+        // rows long enough for the widest form.
+        const bool nan = trial % 15 == 14;
+        if (nan) g.p1 = {-1e308, 0}, g.p2 = {1e308, 1}, g.spread = Spread(trial / 15 % 3);
         GradientShader sh;
         ASSERT_TRUE(sh.prepare(g, random_map(rng, trial), 0.8f));
-        const auto [x, y, row] = shade_random_row(sh, rng);
+        const auto [x, y, row] = shade_random_row(sh, rng, nan ? 16 : 1);
         const int n = int(row.size());
         for (int i = 0; i < n; ++i) {
             const Premul p = row[std::size_t(i)], q = sh.at(x + i, y);

@@ -1,10 +1,11 @@
 // What this CPU runs beyond the x86-64 baseline (SSE2), detected once.
 //
 // The hot loops that have a wider form (fill_run.h, pixel8.h's blend runs,
-// image_shader.cpp's bilinear rows) choose it by `use_avx2`, and each wider
-// form computes the same bits as the baseline one (tested side by side), so
-// a picture does not depend on the machine that drew it. Where the target is
-// not x86-64, nothing is wider and `use_avx2` is false.
+// image_shader.cpp's bilinear rows, gradient.cpp's radial parameters and
+// pad entries) choose it by `use_avx2`, and each wider form computes the
+// same bits as the baseline one (tested side by side), so a picture does
+// not depend on the machine that drew it. Where the target is not x86-64,
+// nothing is wider and `use_avx2` is false.
 #pragma once
 
 namespace casteljau {
