@@ -41,10 +41,19 @@ unit_test_shards() {
   grep -h "PASSED" "$dir"/unit_tests.*.log || true
 }
 
+# The paint tests of build dir $1 once more with the baseline (SSE2) forms
+# of the loops that have wider ones (CASTELJAU_NO_AVX2, paint/cpu.h): on a
+# CPU with AVX2 the baseline forms otherwise run only at the ends of rows.
+baseline_forms() {
+  CASTELJAU_NO_AVX2=1 GTEST_BRIEF=1 timeout 600 "$1/tests/casteljau_tests" \
+    --gtest_filter='Cpu.*:FillRun.*:Pixel8.*:ImageShader.*:Gradient.*:Canvas*:Pattern*'
+}
+
 # The named tests through ctest (CLI, agreement, bad input, Python, fuzz
 # replays, install), then the unit tests.
 ctest --test-dir build -j "$jobs" --output-on-failure -E '^[A-Z]'
 unit_test_shards build
+baseline_forms build
 
 # Sanitizers: the same tests, minus the install test (its consumer project is
 # built without the sanitizer runtime the instrumented library needs) and the
@@ -69,6 +78,7 @@ export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp
 # the svg_render fuzz target the examples' kinds of content).
 ctest --test-dir build-asan -j "$jobs" --output-on-failure -E '^install\.|^[A-Z]|^svg\.rsvg_agreement$'
 unit_test_shards build-asan
+baseline_forms build-asan
 unset ASAN_OPTIONS UBSAN_OPTIONS LSAN_OPTIONS
 
 # Fuzzing smoke: 4 s per target from the seed corpus (and the regressions,

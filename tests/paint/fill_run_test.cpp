@@ -4,6 +4,7 @@
 #include "casteljau/paint/cpu.h"
 #include "casteljau/paint/fill_run.h"
 
+#include <cstdlib>
 #include <gtest/gtest.h>
 #include <vector>
 
@@ -35,6 +36,15 @@ TEST(FillRun, Sse2FormWritesExactlyTheRun) { expect_exact_runs(detail::fill_run_
 TEST(FillRun, Avx2FormWritesExactlyTheRun) {
     if (!cpu_has_avx2()) GTEST_SKIP() << "this CPU has no AVX2";
     expect_exact_runs(detail::fill_run_avx2, "avx2");
+}
+
+// The wider forms run where the CPU has them, unless CASTELJAU_NO_AVX2 asks
+// for the baseline ones (scripts/test.sh runs the paint tests so too).
+TEST(Cpu, WiderFormsRunWhereTheCpuHasThemAndTheEnvironmentAllows) {
+    const char* v = std::getenv("CASTELJAU_NO_AVX2");
+    const bool asked_baseline = v && *v;
+    EXPECT_EQ(avx2_disabled_by_environment(), asked_baseline);
+    EXPECT_EQ(use_avx2, cpu_has_avx2() && !asked_baseline);
 }
 
 TEST(FillRun, DispatchedFormWritesExactlyTheRun) { expect_exact_runs(fill_run, "dispatched"); }

@@ -1,5 +1,7 @@
 #include "casteljau/paint/cpu.h"
 
+#include <cstdlib>
+
 namespace casteljau {
 
 bool cpu_has_avx2() noexcept {
@@ -11,6 +13,11 @@ bool cpu_has_avx2() noexcept {
 #else
     return false;
 #endif
+}
+
+bool avx2_disabled_by_environment() noexcept {
+    const char* v = std::getenv("CASTELJAU_NO_AVX2");
+    return v && *v;
 }
 
 } // namespace casteljau

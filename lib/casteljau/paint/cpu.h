@@ -13,8 +13,15 @@ namespace casteljau {
 /// Whether this CPU runs AVX2 (asked of the CPU at each call).
 bool cpu_has_avx2() noexcept;
 
-/// cpu_has_avx2(), read once at start-up. Code that runs before this
-/// library's static initialization reads false, the baseline forms: safe.
-inline const bool use_avx2 = cpu_has_avx2();
+/// Whether the environment variable CASTELJAU_NO_AVX2 is set and not empty:
+/// then the baseline forms run everywhere (as pixman's PIXMAN_DISABLE does),
+/// which is how the tests check them on machines that have the wider ones
+/// (scripts/test.sh).
+bool avx2_disabled_by_environment() noexcept;
+
+/// cpu_has_avx2() unless the environment says otherwise, read once at
+/// start-up. Code that runs before this library's static initialization
+/// reads false, the baseline forms: safe.
+inline const bool use_avx2 = cpu_has_avx2() && !avx2_disabled_by_environment();
 
 } // namespace casteljau
