@@ -101,15 +101,21 @@ void quantize_rows(const Premul* top, const Premul* bottom, float t, int n, Prem
 }
 
 #if defined(CASTELJAU_X86_DISPATCH)
-/// lerp_columns two columns a vector (AVX), lane by lane the same
-/// arithmetic; the last odd column goes to the form above.
+// The AVX forms. GCC does not compile AVX intrinsics in lambdas of a
+// function that has the target, hence small functions.
+
+/// Pixels *p (low half) and *q (high half) in one vector.
 [[gnu::target("avx2")]] __m256 pixel_pair2(const Premul* p, const Premul* q) {
     return _mm256_set_m128(_mm_loadu_ps(&q->r), _mm_loadu_ps(&p->r));
 }
+/// Pixels i (low half) and j (high half) of a row.
 [[gnu::target("avx2")]] __m256 pixel_pair(const Premul* row, int i, int j) {
     return pixel_pair2(row + i, row + j);
 }
 
+/// lerp_columns two columns a vector, lane by lane the same arithmetic, the
+/// alphas compared with 1 as they are stored; the last odd column goes to
+/// the form above.
 [[gnu::target("avx2")]] bool lerp_columns_avx2(const Premul* row, const Axis* columns, int from,
                                                int to, Premul* out) {
     const __m256 one = _mm256_set1_ps(1.0f);
@@ -128,8 +134,6 @@ void quantize_rows(const Premul* top, const Premul* bottom, float t, int n, Prem
     return lerp_columns(row, columns, c, to, out) && opaque;
 }
 
-// AVX pieces of shade_turned_avx2 (GCC does not compile AVX intrinsics in
-// lambdas of a function that has the target, hence functions).
 /// PadAxes of four coordinates: the pixels and weights along one axis.
 [[gnu::target("avx2")]] void pad_axes4(__m256d v, int size, int* i0, int* i1, float* t) {
     const __m256d u =
