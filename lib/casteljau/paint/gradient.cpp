@@ -178,9 +178,6 @@ namespace {
 // opaque tables stored, bench/README.md).
 constexpr int kBlock = 64;
 
-/// e[i] = entry(spread(t[i], S)) for i in [0, m): for pad, two at a time
-/// with the same arithmetic (maxpd gives 0 for NaN, the first stop, as
-/// entry() does).
 #if defined(CASTELJAU_X86_DISPATCH)
 /// entries_of's pad loop four entries a pass (AVX), operation for
 /// operation; returns how many of the m it did (a multiple of 4).
@@ -235,6 +232,9 @@ template <bool Ring>
 }
 #endif
 
+/// e[i] = entry(spread(t[i], S)) for i in [0, m): for pad, two at a time
+/// with the same arithmetic (maxpd gives 0 for NaN, the first stop, as
+/// entry() does), or four (pad_entries_avx2).
 template <Spread S>
 void entries_of(const double* t, int m, int* e) {
     int i = 0;
