@@ -70,14 +70,16 @@ Premul lerp(const Premul& a, const Premul& b, float t) {
             a.a + (b.a - a.a) * t};
 }
 
+/// A color times the opacity k (inlined by force: once a pixel).
+[[gnu::always_inline]] inline Premul scaled(const Premul& c, float k) {
+    return {c.r * k, c.g * k, c.b * k, c.a * k};
+}
+
 /// out[i] = lerp(top[i], bottom[i], t) times `opacity`, for i in [0, n):
 /// the vertical half of a level row's samples (a pixel a vector).
 void lerp_rows(const Premul* top, const Premul* bottom, float t, float opacity, int n,
                Premul* out) {
-    for (int i = 0; i < n; ++i) {
-        const Premul c = lerp(top[i], bottom[i], t);
-        out[i] = {c.r * opacity, c.g * opacity, c.b * opacity, c.a * opacity};
-    }
+    for (int i = 0; i < n; ++i) out[i] = scaled(lerp(top[i], bottom[i], t), opacity);
 }
 
 /// out[c] = lerp(row[i0], row[i1], t) of column c's axis, for c in
@@ -105,17 +107,22 @@ void quantize_rows(const Premul* top, const Premul* bottom, float t, int n, Prem
 // function that has the target, hence small functions.
 
 /// Pixels *p (low half) and *q (high half) in one vector.
-[[gnu::target("avx2")]] __m256 pixel_pair2(const Premul* p, const Premul* q) {
+[[gnu::target("avx2")]] __m256 pixel_pair(const Premul* p, const Premul* q) {
     return _mm256_set_m128(_mm_loadu_ps(&q->r), _mm_loadu_ps(&p->r));
 }
-/// Pixels i (low half) and j (high half) of a row.
-[[gnu::target("avx2")]] __m256 pixel_pair(const Premul* row, int i, int j) {
-    return pixel_pair2(row + i, row + j);
+/// Weight a in the low half, b in the high half.
+[[gnu::target("avx2")]] __m256 weight_pair(float a, float b) {
+    return _mm256_set_m128(_mm_set1_ps(b), _mm_set1_ps(a));
+}
+/// lerp() of two pixels a vector: each lane the scalar form's operations,
+/// and no multiply-add (these functions' target is AVX2 alone), so the
+/// same bits.
+[[gnu::target("avx2")]] __m256 lerp2(__m256 a, __m256 b, __m256 t) {
+    return _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), t));
 }
 
-/// lerp_columns two columns a vector, lane by lane the same arithmetic, the
-/// alphas compared with 1 as they are stored; the last odd column goes to
-/// the form above.
+/// lerp_columns two columns a vector, the alphas compared with 1 as they
+/// are stored; the last odd column goes to the form above.
 [[gnu::target("avx2")]] bool lerp_columns_avx2(const Premul* row, const Axis* columns, int from,
                                                int to, Premul* out) {
     const __m256 one = _mm256_set1_ps(1.0f);
@@ -123,9 +130,8 @@ void quantize_rows(const Premul* top, const Premul* bottom, float t, int n, Prem
     int c = from;
     for (; c + 2 <= to; c += 2) {
         const Axis &x0 = columns[c], &x1 = columns[c + 1];
-        const __m256 a = pixel_pair(row, x0.i0, x1.i0), b = pixel_pair(row, x0.i1, x1.i1);
-        const __m256 t = _mm256_set_m128(_mm_set1_ps(x1.t), _mm_set1_ps(x0.t));
-        const __m256 v = _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), t));
+        const __m256 v = lerp2(pixel_pair(row + x0.i0, row + x1.i0),
+                               pixel_pair(row + x0.i1, row + x1.i1), weight_pair(x0.t, x1.t));
         _mm256_storeu_ps(&out[c].r, v);
         ones = _mm256_and_ps(ones, _mm256_cmp_ps(v, one, _CMP_EQ_OQ));
     }
@@ -149,14 +155,6 @@ void quantize_rows(const Premul* top, const Premul* bottom, float t, int n, Prem
 [[gnu::target("avx2")]] __m256d mapped4(__m256d cx, double a, double c_cy, double e) {
     return _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_set1_pd(a), cx), _mm256_set1_pd(c_cy)),
                          _mm256_set1_pd(e));
-}
-/// lerp() of two pixels a vector.
-[[gnu::target("avx2")]] __m256 lerp2(__m256 a, __m256 b, __m256 t) {
-    return _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), t));
-}
-/// Weights t[k] (low half) and t[k + 1] (high half).
-[[gnu::target("avx2")]] __m256 weight_pair(const float* t, int k) {
-    return _mm256_set_m128(_mm_set1_ps(t[k + 1]), _mm_set1_ps(t[k]));
 }
 
 /// The padded bilinear samples of a turned map (PadAxes and the sample of
@@ -183,29 +181,26 @@ void quantize_rows(const Premul* top, const Premul* bottom, float t, int n, Prem
             const Premul* r1 = px + std::size_t(y0[k + 1]) * w;
             const Premul* s0 = px + std::size_t(y1[k]) * w;
             const Premul* s1 = px + std::size_t(y1[k + 1]) * w;
-            const __m256 wx = weight_pair(tx, k);
-            const __m256 top = lerp2(pixel_pair2(r0 + x0[k], r1 + x0[k + 1]),
-                                     pixel_pair2(r0 + x1[k], r1 + x1[k + 1]), wx);
-            const __m256 bottom = lerp2(pixel_pair2(s0 + x0[k], s1 + x0[k + 1]),
-                                        pixel_pair2(s0 + x1[k], s1 + x1[k + 1]), wx);
+            const __m256 wx = weight_pair(tx[k], tx[k + 1]);
+            const __m256 top = lerp2(pixel_pair(r0 + x0[k], r1 + x0[k + 1]),
+                                     pixel_pair(r0 + x1[k], r1 + x1[k + 1]), wx);
+            const __m256 bottom = lerp2(pixel_pair(s0 + x0[k], s1 + x0[k + 1]),
+                                        pixel_pair(s0 + x1[k], s1 + x1[k + 1]), wx);
             _mm256_storeu_ps(&out[i + k].r,
-                             _mm256_mul_ps(lerp2(top, bottom, weight_pair(ty, k)), o));
+                             _mm256_mul_ps(lerp2(top, bottom, weight_pair(ty[k], ty[k + 1])), o));
         }
     }
     return i;
 }
 
-/// lerp_rows two pixels a vector (AVX): the same subtraction, products and
-/// sum in each lane, and no multiply-add (this function's target is AVX2
-/// alone), so the same bits. The last odd pixel goes to the form above.
-/// Measured: bench/README.md, 2026-11-29.
+/// lerp_rows two pixels a vector; the last odd pixel goes to the form
+/// above. Measured: bench/README.md, 2026-11-29.
 [[gnu::target("avx2")]] void lerp_rows_avx2(const Premul* top, const Premul* bottom, float t,
                                             float opacity, int n, Premul* out) {
     const __m256 tt = _mm256_set1_ps(t), o = _mm256_set1_ps(opacity);
     int i = 0;
     for (; i + 2 <= n; i += 2) {
-        const __m256 a = _mm256_loadu_ps(&top[i].r), b = _mm256_loadu_ps(&bottom[i].r);
-        const __m256 c = _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), tt));
+        const __m256 c = lerp2(_mm256_loadu_ps(&top[i].r), _mm256_loadu_ps(&bottom[i].r), tt);
         _mm256_storeu_ps(&out[i].r, _mm256_mul_ps(c, o));
     }
     lerp_rows(top + i, bottom + i, t, opacity, n - i, out + i);
@@ -220,9 +215,8 @@ void quantize_rows(const Premul* top, const Premul* bottom, float t, int n, Prem
     for (; i + 4 <= n; i += 4) {
         __m256i q[2];
         for (int k = 0; k < 2; ++k) {
-            const __m256 a = _mm256_loadu_ps(&top[i + 2 * k].r);
-            const __m256 b = _mm256_loadu_ps(&bottom[i + 2 * k].r);
-            const __m256 c = _mm256_add_ps(a, _mm256_mul_ps(_mm256_sub_ps(b, a), tt));
+            const __m256 c = lerp2(_mm256_loadu_ps(&top[i + 2 * k].r),
+                                   _mm256_loadu_ps(&bottom[i + 2 * k].r), tt);
             q[k] = _mm256_cvtps_epi32(_mm256_mul_ps(c, s));
         }
         const __m128i p01 =
@@ -367,7 +361,7 @@ void ImageShader::copy_row(int x, int y, int n, Premul* out) const {
         if (opacity_ == 1)
             std::copy(from, from + m, out + k);
         else
-            for (int j = 0; j < m; ++j) out[k + j] = scaled(from[j]);
+            for (int j = 0; j < m; ++j) out[k + j] = scaled(from[j], opacity_);
     });
 }
 
@@ -404,7 +398,7 @@ void ImageShader::shade(int x, int y, int n, Premul* out) const {
             const Point p = m * Point{x + i + 0.5, cy};
             const double u = repeat_ ? wrap(p.x, im.width, inv_w_) : p.x;
             const double v = repeat_ ? wrap(p.y, im.height, inv_h_) : p.y;
-            out[i] = scaled(pixel(clamp_index(u, im.width), clamp_index(v, im.height)));
+            out[i] = scaled(pixel(clamp_index(u, im.width), clamp_index(v, im.height)), opacity_);
         }
         return;
     }
@@ -429,7 +423,8 @@ void ImageShader::shade(int x, int y, int n, Premul* out) const {
 #endif
         const auto sample = [&](const Axis& ax, const Axis& ay) {
             return scaled(lerp(lerp(pixel(ax.i0, ay.i0), pixel(ax.i1, ay.i0), ax.t),
-                               lerp(pixel(ax.i0, ay.i1), pixel(ax.i1, ay.i1), ax.t), ay.t));
+                               lerp(pixel(ax.i0, ay.i1), pixel(ax.i1, ay.i1), ax.t), ay.t),
+                          opacity_);
         };
         for (; i + 2 <= n; i += 2) {
             const __m128d cx = _mm_add_pd(_mm_cvtepi32_pd(_mm_setr_epi32(x + i, x + i + 1, 0, 0)),
@@ -449,7 +444,8 @@ void ImageShader::shade(int x, int y, int n, Premul* out) const {
         const Axis ax = bilinear_axis(p.x, im.width, inv_w_, repeat_);
         const Axis ay = level ? row_axis : bilinear_axis(p.y, im.height, inv_h_, repeat_);
         out[i] = scaled(lerp(lerp(pixel(ax.i0, ay.i0), pixel(ax.i1, ay.i0), ax.t),
-                             lerp(pixel(ax.i0, ay.i1), pixel(ax.i1, ay.i1), ax.t), ay.t));
+                             lerp(pixel(ax.i0, ay.i1), pixel(ax.i1, ay.i1), ax.t), ay.t),
+                        opacity_);
     }
 }
 

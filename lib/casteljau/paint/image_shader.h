@@ -84,10 +84,6 @@ class ImageShader {
     bool store_opaque(int x, int y, int n, Premul8* out) const;
 
   private:
-    /// A color times the opacity (inlined by force: once a pixel).
-    [[gnu::always_inline]] Premul scaled(const Premul& c) const {
-        return {c.r * opacity_, c.g * opacity_, c.b * opacity_, c.a * opacity_};
-    }
     /// shade() where the map translates by whole pixels: the pixels copied.
     void copy_row(int x, int y, int n, Premul* out) const;
     /// The stretches of `pixels` (the image's, or its opaque8) that device
