@@ -14,9 +14,14 @@
 // decoded images do not: most are opaque and drawn scaled, and the copy
 // would be a quarter more memory than the 16 bytes a pixel the image
 // limits count (SvgOptions::max_image_pixels).
+//
+// Drawn smaller than half its size, an image is sampled from one of its
+// levels (level(), image_levels.h): halvings built on first use, kept with
+// the image, a third of its pixels more at most.
 #pragma once
 
 #include "casteljau/paint/color.h"
+#include "casteljau/paint/image_levels.h"
 #include "casteljau/paint/pixel8.h"
 
 #include <algorithm>
@@ -47,6 +52,15 @@ struct RasterImage {
         std::transform(pixels.begin(), pixels.end(), opaque8.begin(),
                        [](const Premul& p) { return quantize(p); });
     }
+
+    /// This image halved k times (image_levels.h), k clamped to [0, the
+    /// last level, 1 x 1]; level 0 is the image itself. Built from the
+    /// pixels on first use (they must be final by then) and kept; safe to
+    /// call from several threads.
+    const RasterImage& level(int k) const { return k <= 0 ? *this : levels_.get(*this, k); }
+
+  private:
+    ImageLevels levels_;
 };
 
 } // namespace casteljau

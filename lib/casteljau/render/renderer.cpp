@@ -408,11 +408,20 @@ void Renderer::paint(const Shape& s, Rgba color, const Gradient* gradient, const
 bool Renderer::prepare_pattern(const Pattern& p, const Affine& m, float opacity) {
     if (!(p.width > 0 && p.height > 0)) return false;
     const Affine to_device = m * p.transform; // tile space -> device
-    if (p.image)
+    if (p.image) {
+        // Smooth sampling of an image drawn smaller than half its size
+        // reads one of its levels (paint/image_levels.h), which covers the
+        // same tile with fewer pixels; nearest-pixel sampling (pixelated)
+        // keeps the image's own.
+        const RasterImage& im = *p.image;
+        const Affine image_map =
+            to_device * Affine::scale(p.width / im.width, p.height / im.height);
+        const RasterImage& level =
+            p.smooth ? im.level(level_for(image_map, im.width, im.height)) : im;
         return image_shader_.prepare(
-            *p.image,
-            to_device * Affine::scale(p.width / p.image->width, p.height / p.image->height),
+            level, to_device * Affine::scale(p.width / level.width, p.height / level.height),
             opacity, p.smooth, p.repeat);
+    }
     // The tile is drawn at the device resolution: as many pixels as the
     // tile's sides are long on the device (its columns' lengths under the
     // map), rounded up, at least one, and fewer where that is over

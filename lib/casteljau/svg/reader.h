@@ -70,8 +70,9 @@ struct SvgOptions {
     /// path; parse_svg takes the current directory when it is "".
     std::string base_dir;
     /// An \<image\>'s pixels (width x height as its file declares them; 16
-    /// bytes each once decoded, so 2^25 pixels are 512 MiB); a larger
-    /// image is not drawn, with a warning.
+    /// bytes each once decoded, so 2^25 pixels are 512 MiB, and a third
+    /// more once drawn smaller than half its size: its levels,
+    /// paint/image_levels.h); a larger image is not drawn, with a warning.
     std::size_t max_image_pixels = std::size_t(1) << 25;
     /// SVG files drawn by \<image\> inside SVG files drawn by \<image\>, at most.
     int max_image_nesting = 8;
