@@ -153,15 +153,15 @@ Scene full_canvas_rect() {
     return s;
 }
 
-Scene stretched_image(unsigned seed, bool turned) {
+Scene stretched_image(unsigned seed, int side, bool turned) {
     // Smooth ramps and noise, opaque: what a photograph asks of the sampler.
-    constexpr int kSide = 512;
     Rng rng(seed);
     auto im = std::make_shared<RasterImage>();
-    im->width = im->height = kSide;
-    for (int y = 0; y < kSide; ++y)
-        for (int x = 0; x < kSide; ++x)
-            im->pixels.push_back({float(x) / kSide, float(y) / kSide, float(rng.uniform(0, 1)), 1});
+    im->width = im->height = side;
+    im->pixels.reserve(std::size_t(side) * std::size_t(side));
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x)
+            im->pixels.push_back({float(x) / side, float(y) / side, float(rng.uniform(0, 1)), 1});
     auto pattern = std::make_shared<Pattern>();
     pattern->width = pattern->height = kSceneSize;
     pattern->image = std::move(im);
@@ -223,8 +223,9 @@ std::vector<NamedScene> standard_scenes() {
 
 std::vector<NamedScene> paint_scenes() {
     std::vector<NamedScene> v;
-    v.push_back({"image_level", stretched_image(5, false)});
-    v.push_back({"image_turned", stretched_image(5, true)});
+    v.push_back({"image_level", stretched_image(5, 512, false)});
+    v.push_back({"image_turned", stretched_image(5, 512, true)});
+    v.push_back({"image_shrunk", stretched_image(5, 2900, false)});
     v.push_back({"linear_gradient", gradient_fill(Gradient::Kind::Linear)});
     v.push_back({"radial_gradient", gradient_fill(Gradient::Kind::Radial)});
     v.push_back({"pattern_2k", pattern_rects(6, 2000)});

@@ -32,9 +32,10 @@ Scene full_canvas_rect();
 /// 5k glyph shapes and the full-canvas rectangle.
 std::vector<NamedScene> standard_scenes();
 
-/// A seeded 512 x 512 image stretched over the canvas, level or turned by
-/// 10 degrees about its centre (and grown to cover the canvas).
-Scene stretched_image(unsigned seed, bool turned);
+/// A seeded side x side image stretched over the canvas, level or turned by
+/// 10 degrees about its centre (and grown to cover the canvas): 512 px
+/// drawn at 2x, or 2900 px drawn at 1/2.83 (sampled from its level 1).
+Scene stretched_image(unsigned seed, int side, bool turned);
 /// The canvas filled with a gradient of three opaque stops: linear along the
 /// diagonal, or radial with its focal point off the centre.
 Scene gradient_fill(Gradient::Kind kind);

@@ -80,7 +80,9 @@ cairo_pattern_t* make_tile(cairo_t* cr, const Pattern& p) {
         cairo_pattern_t* pattern = cairo_pattern_create_for_surface(image_surface(*p.image));
         set_pattern_matrix(pattern, p.transform * Affine::scale(p.width / p.image->width,
                                                                 p.height / p.image->height));
-        cairo_pattern_set_filter(pattern, p.smooth ? CAIRO_FILTER_BILINEAR : CAIRO_FILTER_NEAREST);
+        // GOOD, as librsvg asks for images: bilinear where the image is
+        // shrunk by less than 4/3, else a box over each pixel's footprint.
+        cairo_pattern_set_filter(pattern, p.smooth ? CAIRO_FILTER_GOOD : CAIRO_FILTER_NEAREST);
         cairo_pattern_set_extend(pattern, p.repeat ? CAIRO_EXTEND_REPEAT : CAIRO_EXTEND_PAD);
         return pattern;
     }

@@ -8,7 +8,9 @@
 // composites into 8-bit premultiplied ARGB32, where Casteljau composites in
 // float. Gradients, images and pattern tiles are Cairo patterns: an image
 // is converted to an ARGB32 surface once and kept (an application would
-// decode it once), a pattern's tile drawn by Cairo each time it is used, at
+// decode it once) and sampled with CAIRO_FILTER_GOOD, as librsvg draws
+// images (bilinear, but a box over each pixel's footprint where the image
+// is shrunk, as Casteljau's levels stand in for), a pattern's tile drawn by Cairo each time it is used, at
 // the device resolution, as Casteljau draws it. Clips, masks, filters and
 // blend modes are left out.
 #pragma once
