@@ -126,6 +126,47 @@ TEST(FontDatabase, SystemConfigurationHonoursFontconfigFile) {
     EXPECT_EQ(file_name(db.match(query("No Such Font"))), "DejaVuSerif.ttf");
 }
 
+// Bold and italic a family lacks are synthesized where fontconfig's rules
+// for fonts say so (tests/text/fonts.conf has 90-synthetic.conf's), and
+// only there: a family with the face draws it, and a configuration without
+// the rules synthesizes nothing.
+TEST(FontDatabase, SynthesizesWhatAFamilyLacksAsFontconfigSays) {
+    const char* old = std::getenv("FONTCONFIG_FILE");
+    const std::string saved = old ? old : "";
+    ::setenv("FONTCONFIG_FILE", CASTELJAU_TESTS "/text/fonts.conf", 1);
+    FontDatabase db;
+    if (old)
+        ::setenv("FONTCONFIG_FILE", saved.c_str(), 1);
+    else
+        ::unsetenv("FONTCONFIG_FILE");
+    const auto synthesis = [&](FontDatabase& d, const std::string& family, int weight,
+                               FontStyle style) {
+        const std::optional<FontFace> f = d.match(query(family, weight, style));
+        return f ? f->synthesis : FontSynthesis{true, -1};
+    };
+    // Noto Sans Mono has a bold face and no italic; Noto Mono a regular face only.
+    EXPECT_EQ(synthesis(db, "Noto Sans Mono", 400, FontStyle::Italic), (FontSynthesis{false, 0.2}));
+    EXPECT_EQ(synthesis(db, "Noto Sans Mono", 400, FontStyle::Oblique),
+              (FontSynthesis{false, 0.2}));
+    EXPECT_EQ(synthesis(db, "Noto Sans Mono", 700, FontStyle::Normal), FontSynthesis{});
+    EXPECT_EQ(file_name(db.match(query("Noto Sans Mono", 700))), "NotoSansMono-Bold.ttf");
+    EXPECT_EQ(synthesis(db, "Noto Mono", 700, FontStyle::Normal), (FontSynthesis{true, 0}));
+    EXPECT_EQ(synthesis(db, "Noto Mono", 600, FontStyle::Normal), FontSynthesis{})
+        << "fontconfig's rule: bold from 700";
+    EXPECT_EQ(synthesis(db, "Noto Mono", 700, FontStyle::Italic), (FontSynthesis{true, 0.2}));
+    EXPECT_EQ(synthesis(db, "Noto Sans", 700, FontStyle::Italic), FontSynthesis{});
+    EXPECT_EQ(synthesis(db, "Noto Sans Mono", 400, FontStyle::Normal), FontSynthesis{});
+    // Loaded apart from the face drawn as it is.
+    const auto plain = db.font(*db.match(query("Noto Mono")));
+    const auto bold = db.font(*db.match(query("Noto Mono", 700)));
+    ASSERT_TRUE(plain && bold);
+    EXPECT_NE(plain.get(), bold.get());
+    EXPECT_TRUE(bold->synthesis().bold);
+    EXPECT_FALSE(plain->synthesis().bold);
+    // test_fonts() has no rules: nothing synthesized.
+    EXPECT_EQ(synthesis(test_fonts(), "Noto Mono", 700, FontStyle::Italic), FontSynthesis{});
+}
+
 // A character's fallback is a font that has it; none when no font has it.
 TEST(FontDatabase, FallbackFindsAFontWithTheCharacter) {
     FontDatabase& db = test_fonts();
@@ -156,7 +197,7 @@ TEST(FontDatabase, FontsAreSharedPerFaceAndVariation) {
     EXPECT_EQ(c.get(), d.get());
     EXPECT_NE(a.get(), c.get());
     // A file that is not a font gives null, and matching does not offer it.
-    EXPECT_FALSE(db.font({"/nonexistent/font.ttf", 0, nullptr}));
+    EXPECT_FALSE(db.font({"/nonexistent/font.ttf", 0, nullptr, {}}));
 }
 
 } // namespace
@@ -239,6 +280,35 @@ TEST(FontDatabaseLayer, StyleThenWeightAsCssFonts4Says) {
     EXPECT_EQ(file(300), "@font-face 4 (F)"); // below 400: lighter first
     EXPECT_EQ(file(100), "@font-face 4 (F)"); // then heavier, nearest
     EXPECT_NE(name(700), name(400));
+}
+
+// A document's family lacking bold or italic gets them synthesized by the
+// rule the system's fonts have (fontconfig's): bold for 700 and more from
+// a face of 500 or less, a slant for italic or oblique from a normal face.
+TEST(FontDatabaseLayer, SynthesizesTheBoldAndItalicADocumentFamilyLacks) {
+    auto layer = FontDatabase::layer(test_fonts());
+    add(*layer, "R", "DejaVuSerif.ttf", 400, 400);
+    add(*layer, "B", "DejaVuSerif.ttf", 400, 400);
+    add(*layer, "B", "DejaVuSerif-Bold.ttf", 700, 700);
+    add(*layer, "W", "DejaVuSerif.ttf", 100, 900); // a range: every weight its own
+    add(*layer, "I", "DejaVuSerif-Italic.ttf", 400, 400, FontStyle::Italic);
+    const auto synthesis = [&](const std::string& family, int weight, FontStyle style) {
+        const std::optional<FontFace> f = layer->match(query(family, weight, style));
+        return f && f->data ? f->synthesis : FontSynthesis{true, -1};
+    };
+    EXPECT_EQ(synthesis("R", 400, FontStyle::Normal), FontSynthesis{});
+    EXPECT_EQ(synthesis("R", 700, FontStyle::Normal), (FontSynthesis{true, 0}));
+    EXPECT_EQ(synthesis("R", 600, FontStyle::Normal), FontSynthesis{});
+    EXPECT_EQ(synthesis("R", 900, FontStyle::Italic), (FontSynthesis{true, 0.2}));
+    EXPECT_EQ(synthesis("R", 400, FontStyle::Oblique), (FontSynthesis{false, 0.2}));
+    EXPECT_EQ(synthesis("B", 700, FontStyle::Normal), FontSynthesis{});
+    EXPECT_EQ(synthesis("B", 700, FontStyle::Italic), (FontSynthesis{false, 0.2}));
+    EXPECT_EQ(synthesis("W", 900, FontStyle::Normal), FontSynthesis{});
+    EXPECT_EQ(synthesis("I", 400, FontStyle::Italic), FontSynthesis{});
+    EXPECT_EQ(synthesis("I", 400, FontStyle::Normal), FontSynthesis{}) << "never unslanted";
+    const auto font = layer->font(*layer->match(query("R", 700, FontStyle::Italic)));
+    ASSERT_TRUE(font);
+    EXPECT_EQ(font->synthesis(), (FontSynthesis{true, 0.2}));
 }
 
 TEST(FontDatabaseLayer, OnlyALayerTakesFontsAndOnlyFontsAreTaken) {

@@ -516,6 +516,35 @@ TEST(GlyphOutline, SpaceAndOutOfRangeGlyphsAreEmpty) {
     EXPECT_EQ(font->glyph_index(U'\U0010FFFD'), 0u);
 }
 
+// Synthesized faces (FontSynthesis): a slant moves every control point by
+// 0.2 of its height, exactly; emboldening grows each glyph by 1/24 em to
+// the right and up, its left and bottom where they were (FreeType's
+// FT_GlyphSlot_Embolden; glyphs whose extremes are stems, right angles and
+// round sides: a sharp corner grows further, as a miter does); neither
+// changes an advance.
+TEST(GlyphOutline, SynthesizedBoldGrowsAndSlantShears) {
+    const auto plain = Font::load(kDejaVuSans, 0, {});
+    const auto bold = Font::load(kDejaVuSans, 0, {});
+    const auto slanted = Font::load(kDejaVuSans, 0, {});
+    ASSERT_TRUE(plain && bold && slanted);
+    bold->set_synthesis({true, 0});
+    slanted->set_synthesis({false, 0.2});
+    const double strength = std::floor(plain->metrics().units_per_em / 24);
+    for (const char32_t c : std::u32string(U"lHoOEn8")) {
+        const std::uint32_t g = plain->glyph_index(c);
+        Path sheared = plain->outline(g);
+        sheared.transform(Affine{1, 0, 0.2, 1, 0, 0});
+        EXPECT_EQ(control_point_distance(slanted->outline(g), sheared), 0) << char(c);
+        const Rect p = plain->outline(g).control_bounds(), b = bold->outline(g).control_bounds();
+        EXPECT_NEAR(b.x0, p.x0, 1) << char(c);
+        EXPECT_NEAR(b.y0, p.y0, 1) << char(c);
+        EXPECT_NEAR(b.x1, p.x1 + strength, 1) << char(c);
+        EXPECT_NEAR(b.y1, p.y1 + strength, 1) << char(c);
+        EXPECT_EQ(bold->advance(g), plain->advance(g));
+        EXPECT_EQ(slanted->advance(g), plain->advance(g));
+    }
+}
+
 // The x-height and cap height are the tops of x and H: what font-size-adjust
 // scales by. Noto Sans has them in its OS/2 table (version 4).
 TEST(FontLoad, MetricsFromTheOs2Table) {

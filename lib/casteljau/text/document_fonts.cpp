@@ -9,8 +9,8 @@
 //   for w < 400 the nearest lighter, then the nearest heavier; for w > 500
 //   the nearest heavier, then the nearest lighter.
 // Ties go to the face declared last, as later @font-face rules win.
-// Stretch is not matched (no descriptor is read for it). Nothing is
-// synthesized: a family with only a regular face draws bold text with it.
+// Stretch is not matched (no descriptor is read for it). Bold and italic
+// a family lacks are synthesized (face_for), as for the system's fonts.
 #include "casteljau/text/detail/document_fonts.h"
 
 #include "casteljau/text/font.h"
@@ -64,6 +64,16 @@ const FontDatabase::Layer::Entry* FontDatabase::Layer::best(const std::string& f
         if (rank <= best_rank) best = &e, best_rank = rank;
     }
     return best;
+}
+
+FontFace FontDatabase::Layer::face_for(const Entry& e, const FontQuery& q) {
+    FontFace face = e.face;
+    // fontconfig's bold is 700 and medium 500 (its FC_WEIGHT_BOLD, _MEDIUM);
+    // its slant is the matrix [1 0.2; 0 1].
+    face.synthesis.bold = q.weight >= 700 && e.descriptors.weight_max <= 500;
+    if (q.style != FontStyle::Normal && e.descriptors.style == FontStyle::Normal)
+        face.synthesis.slant = 0.2;
+    return face;
 }
 
 } // namespace casteljau

@@ -248,8 +248,17 @@ const Path& Font::outline(std::uint32_t glyph) const {
     if (glyph < glyph_count_ &&
         text_libs().FT_Load_Glyph(face, glyph,
                                   FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP) == 0 &&
-        face->glyph->format == FT_GLYPH_FORMAT_OUTLINE)
-        path = path_of(face->glyph->outline);
+        face->glyph->format == FT_GLYPH_FORMAT_OUTLINE) {
+        FT_Outline& outline = face->glyph->outline;
+        // FT_GlyphSlot_Embolden's strength, 1/24 em (font units here: no
+        // scale), grown right and up as it grows them.
+        if (synthesis_.bold) {
+            const FT_Pos strength = FT_Pos(face->units_per_EM) / 24;
+            text_libs().FT_Outline_EmboldenXY(&outline, strength, strength);
+        }
+        path = path_of(outline);
+        if (synthesis_.slant != 0) path.transform(Affine{1, 0, synthesis_.slant, 1, 0, 0});
+    }
     return path;
 }
 

@@ -40,6 +40,20 @@ struct FontVariation {
     bool operator==(const FontVariation&) const = default; ///< same tag and value
 };
 
+/// What a face lacks and is drawn with anyway (CSS Fonts 4, 3.9
+/// font-synthesis, whose initial value allows both): bold text in a family
+/// without a bold face, italic text in one without an italic or oblique
+/// face. As fontconfig's 90-synthetic.conf asks and cairo draws it (and so
+/// librsvg): emboldened outlines, grown by 1/24 em (FreeType's
+/// FT_GlyphSlot_Embolden), and outlines slanted, x + slant y in font units
+/// (fontconfig's 0.2, 11.3 degrees). Advances stay the font's (HarfBuzz's),
+/// as Pango and Chrome keep them.
+struct FontSynthesis {
+    bool bold = false;
+    double slant = 0;
+    bool operator==(const FontSynthesis&) const = default; ///< the same synthesis
+};
+
 /// Vertical metrics in font units, y up (descender negative).
 struct FontMetrics {
     double units_per_em = 1000;
@@ -90,6 +104,12 @@ class Font {
     std::size_t glyph_count() const { return glyph_count_; }
     /// Whether the font is variable along the design axis `tag` ("wght").
     bool has_axis(const char tag[4]) const;
+    /// Its outlines drawn bold or slanted though the face is not (the
+    /// synthesis of a match, FontFace::synthesis); set once, before the
+    /// first outline is read and the font is shared.
+    void set_synthesis(const FontSynthesis& s) { synthesis_ = s; }
+    /// What set_synthesis set.
+    const FontSynthesis& synthesis() const { return synthesis_; }
 
     /// The most points a glyph outline can have: FreeType 2.12 (Debian 12)
     /// counts them in a signed short, and fails to load a glyph with more,
@@ -111,7 +131,8 @@ class Font {
     std::string family_;
     std::size_t glyph_count_ = 0;
     std::vector<std::uint32_t> axes_; // design axis tags, big-endian packed
-    mutable std::mutex mutex_;        // FreeType faces are not thread-safe
+    FontSynthesis synthesis_;
+    mutable std::mutex mutex_; // FreeType faces are not thread-safe
     mutable std::unordered_map<std::uint32_t, Path> outlines_;
 };
 

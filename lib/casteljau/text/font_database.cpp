@@ -19,7 +19,9 @@
 #include "casteljau/text/detail/document_fonts.h"
 #include "casteljau/text/detail/text_libs.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <tuple>
@@ -36,14 +38,16 @@ struct FontDatabase::Impl {
     // the sort is what costs).
     using FamilyKey = std::tuple<std::string, int, int, int>;
     std::map<FamilyKey, FcPattern*> best;
-    std::map<FamilyKey, FcFontSet*> sorted;
+    // The fonts sorted, and the query they answer (for their synthesis).
+    std::map<FamilyKey, std::pair<FcPattern*, FcFontSet*>> sorted;
     std::map<std::string, std::string> generic_of; // see implied_generic
-    std::map<std::pair<std::pair<std::string, int>, std::vector<std::tuple<std::string, double>>>,
-             std::shared_ptr<const Font>>
-        fonts;
+    // Loaded fonts by file, face, design axes and synthesis.
+    using FontKey =
+        std::tuple<std::string, int, std::vector<std::tuple<std::string, double>>, bool, double>;
+    std::map<FontKey, std::shared_ptr<const Font>> fonts;
 
     FcPattern* best_of(const std::string& family, const FontQuery& q);
-    FcFontSet* sorted_of(const std::string& family, const FontQuery& q);
+    std::pair<FcPattern*, FcFontSet*> sorted_of(const std::string& family, const FontQuery& q);
     std::optional<FontFace> match_family(const std::string& family, const FontQuery& q,
                                          std::optional<char32_t> c);
     std::optional<FontFace> closest(const std::string& family, const FontQuery& q,
@@ -54,8 +58,10 @@ struct FontDatabase::Impl {
         generic_of.clear();
         for (auto& [k, p] : best)
             if (p) text_libs().FcPatternDestroy(p);
-        for (auto& [k, set] : sorted)
-            if (set) text_libs().FcFontSetDestroy(set);
+        for (auto& [k, query_and_set] : sorted) {
+            text_libs().FcPatternDestroy(query_and_set.first);
+            if (query_and_set.second) text_libs().FcFontSetDestroy(query_and_set.second);
+        }
         best.clear();
         sorted.clear();
     }
@@ -87,12 +93,23 @@ bool has_char(FcPattern* p, char32_t c) {
            text_libs().FcCharSetHasChar(cs, c);
 }
 
+// The face a match names, with the synthesis fontconfig's rules for fonts
+// (target="font", 90-synthetic.conf on most systems) put in it: FC_EMBOLDEN,
+// and FC_MATRIX's shear (xy; its other entries are not synthesis).
 std::optional<FontFace> face_of(FcPattern* p) {
     FcChar8* file = nullptr;
     int index = 0;
     if (text_libs().FcPatternGetString(p, FC_FILE, 0, &file) != FcResultMatch) return std::nullopt;
     text_libs().FcPatternGetInteger(p, FC_INDEX, 0, &index);
-    return FontFace{reinterpret_cast<const char*>(file), index, nullptr};
+    FontFace face{reinterpret_cast<const char*>(file), index, nullptr, {}};
+    FcBool embolden = FcFalse;
+    face.synthesis.bold =
+        text_libs().FcPatternGetBool(p, FC_EMBOLDEN, 0, &embolden) == FcResultMatch && embolden;
+    FcMatrix* m = nullptr;
+    if (text_libs().FcPatternGetMatrix(p, FC_MATRIX, 0, &m) == FcResultMatch && m &&
+        std::isfinite(m->xy))
+        face.synthesis.slant = std::clamp(m->xy, -1.0, 1.0); // 45 degrees at most
+    return face;
 }
 
 // The pattern of one family of a query, with fontconfig's substitutions.
@@ -138,14 +155,14 @@ FcPattern* FontDatabase::Impl::best_of(const std::string& family, const FontQuer
     return best[key] = m;
 }
 
-FcFontSet* FontDatabase::Impl::sorted_of(const std::string& family, const FontQuery& q) {
+std::pair<FcPattern*, FcFontSet*> FontDatabase::Impl::sorted_of(const std::string& family,
+                                                                const FontQuery& q) {
     const FamilyKey key{family, q.weight, int(q.style), q.stretch};
     if (const auto it = sorted.find(key); it != sorted.end()) return it->second;
     FcPattern* p = pattern_of(config, family, q);
     FcResult result;
     FcFontSet* set = text_libs().FcFontSort(config, p, FcFalse, nullptr, &result);
-    text_libs().FcPatternDestroy(p);
-    return sorted[key] = set;
+    return sorted[key] = {p, set};
 }
 
 // The first generic family in fontconfig's substitutions of `family` (its
@@ -188,9 +205,17 @@ std::optional<FontFace> FontDatabase::Impl::match_family(const std::string& fami
 // has `c`; without `c`, the closest font of all.
 std::optional<FontFace> FontDatabase::Impl::closest(const std::string& family, const FontQuery& q,
                                                     std::optional<char32_t> c) {
-    if (FcFontSet* set = sorted_of(family, q))
+    const auto [query, set] = sorted_of(family, q);
+    if (set)
         for (int i = 0; i < set->nfont; ++i)
-            if (!c || has_char(set->fonts[i], *c)) return face_of(set->fonts[i]);
+            if (!c || has_char(set->fonts[i], *c)) {
+                // A sorted font is the font's own pattern: fontconfig's
+                // rules for fonts (its synthesis) apply once it is chosen.
+                FcPattern* prepared = text_libs().FcFontRenderPrepare(config, query, set->fonts[i]);
+                std::optional<FontFace> face = face_of(prepared ? prepared : set->fonts[i]);
+                if (prepared) text_libs().FcPatternDestroy(prepared);
+                return face;
+            }
     return std::nullopt;
 }
 
@@ -233,10 +258,12 @@ bool FontDatabase::add_font_data(const FontFaceDescriptors& d,
     // A name unique in the layer: the key of its loaded fonts.
     FontFace face{"@font-face " + std::to_string(layer_->entries.size() + 1) + " (" + d.family +
                       ")",
-                  0, std::move(data)};
+                  0,
+                  std::move(data),
+                  {}};
     std::shared_ptr<const Font> font = Font::load(face.data, face.file, 0, {}, &error);
     if (!font) return false;
-    impl_->fonts[{{face.file, face.index}, {}}] = font;
+    impl_->fonts[{face.file, face.index, {}, false, 0.0}] = font;
     layer_->entries.push_back({d, std::move(face), std::move(font)});
     impl_->forget();
     return true;
@@ -283,7 +310,7 @@ std::optional<FontFace> FontDatabase::find_family(const std::string& family, con
                                                   std::optional<char32_t> c) {
     std::lock_guard lock(mutex_);
     if (parent_) {
-        if (const Layer::Entry* e = layer_->best(family, q, c)) return e->face;
+        if (const Layer::Entry* e = layer_->best(family, q, c)) return Layer::face_for(*e, q);
         return parent_->find_family(family, q, c);
     }
     if (!impl_->config) return std::nullopt; // the text libraries did not load
@@ -297,7 +324,7 @@ std::optional<FontFace> FontDatabase::find(const FontQuery& q, std::optional<cha
     std::optional<FontFace> face;
     if (parent_) { // a layer: its families, or the parent's, in the query's order
         for (const std::string& family : q.families) {
-            if (const Layer::Entry* e = layer_->best(family, q, c)) face = e->face;
+            if (const Layer::Entry* e = layer_->best(family, q, c)) face = Layer::face_for(*e, q);
             if (face || (face = parent_->find_family(family, q, c))) break;
         }
         if (!face) face = parent_->find(q, c);
@@ -324,10 +351,15 @@ std::shared_ptr<const Font> FontDatabase::font(const FontFace& face,
     std::lock_guard lock(mutex_);
     std::vector<std::tuple<std::string, double>> axes;
     for (const FontVariation& v : variations) axes.emplace_back(std::string(v.tag, 4), v.value);
-    auto& slot = impl_->fonts[{{face.file, face.index}, axes}];
-    if (!slot)
-        slot = face.data ? Font::load(face.data, face.file, face.index, variations)
-                         : Font::load(face.file, face.index, variations);
+    auto& slot =
+        impl_->fonts[{face.file, face.index, axes, face.synthesis.bold, face.synthesis.slant}];
+    if (!slot) {
+        std::shared_ptr<Font> f = face.data
+                                      ? Font::load(face.data, face.file, face.index, variations)
+                                      : Font::load(face.file, face.index, variations);
+        if (f) f->set_synthesis(face.synthesis);
+        slot = std::move(f);
+    }
     return slot;
 }
 

@@ -47,7 +47,10 @@ struct FontFace {
     int index = 0;
     /// A font in memory (a document's \@font-face): its bytes; null for a file.
     std::shared_ptr<const std::vector<unsigned char>> data;
-    bool operator==(const FontFace&) const = default; ///< same file (or bytes) and face
+    /// Bold or italic the face lacks, drawn anyway (the match's: fontconfig's
+    /// for the system's fonts, FontSynthesis's rule for a document's).
+    FontSynthesis synthesis;
+    bool operator==(const FontFace&) const = default; ///< same file (or bytes), face and synthesis
 };
 
 /// What a document's font (CSS \@font-face) is for: its family, weights and style.

@@ -22,6 +22,11 @@ struct FontDatabase::Layer {
     /// given; null when the layer has none of that family.
     const Entry* best(const std::string& family, const FontQuery& q,
                       std::optional<char32_t> c) const;
+    /// The entry's face for the query, with the bold or italic it lacks
+    /// synthesized by the rule fontconfig's 90-synthetic.conf gives the
+    /// system's fonts: bold for a weight of 700 or more from a face of 500
+    /// or less, a slant of 0.2 for italic or oblique from a normal face.
+    static FontFace face_for(const Entry& e, const FontQuery& q);
 };
 
 } // namespace casteljau

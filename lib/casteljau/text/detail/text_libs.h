@@ -48,6 +48,7 @@ namespace casteljau {
     X(FreeType, FT_New_Face)                                                                       \
     X(FreeType, FT_New_Memory_Face)                                                                \
     X(FreeType, FT_Outline_Decompose)                                                              \
+    X(FreeType, FT_Outline_EmboldenXY)                                                             \
     X(FreeType, FT_Set_Var_Design_Coordinates)                                                     \
     X(FreeType, FT_Sfnt_Table_Info)                                                                \
     X(HarfBuzz, hb_blob_create)                                                                    \
@@ -86,6 +87,7 @@ namespace casteljau {
     X(Fontconfig, FcConfigSubstitute)                                                              \
     X(Fontconfig, FcDefaultSubstitute)                                                             \
     X(Fontconfig, FcFontMatch)                                                                     \
+    X(Fontconfig, FcFontRenderPrepare)                                                             \
     X(Fontconfig, FcFontSetDestroy)                                                                \
     X(Fontconfig, FcFontSort)                                                                      \
     X(Fontconfig, FcInit)                                                                          \
@@ -96,8 +98,10 @@ namespace casteljau {
     X(Fontconfig, FcPatternAddString)                                                              \
     X(Fontconfig, FcPatternCreate)                                                                 \
     X(Fontconfig, FcPatternDestroy)                                                                \
+    X(Fontconfig, FcPatternGetBool)                                                                \
     X(Fontconfig, FcPatternGetCharSet)                                                             \
     X(Fontconfig, FcPatternGetInteger)                                                             \
+    X(Fontconfig, FcPatternGetMatrix)                                                              \
     X(Fontconfig, FcPatternGetString)                                                              \
     X(Fontconfig, FcWeightFromOpenTypeDouble)                                                      \
     X(FriBidi, fribidi_get_bidi_types)                                                             \
