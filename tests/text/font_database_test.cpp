@@ -95,18 +95,26 @@ TEST(FontDatabase, AddingAFolderThatDoesNotExistFails) {
     EXPECT_TRUE(db->add_font_dir(kDejaVuDir));
 }
 
-// The system configuration, pointed at the tests' own fontconfig file: the
-// generic families resolve through its aliases, a family it classes but has
-// not through its class, and an unknown family through the default family.
-TEST(FontDatabase, SystemConfigurationHonoursFontconfigFile) {
+// A database of the system's configuration as FONTCONFIG_FILE names it, set
+// to tests/text/fonts.conf while it is made (and restored after).
+std::unique_ptr<FontDatabase> fonts_conf_database() {
     const char* old = std::getenv("FONTCONFIG_FILE");
     const std::string saved = old ? old : "";
     ::setenv("FONTCONFIG_FILE", CASTELJAU_TESTS "/text/fonts.conf", 1);
-    FontDatabase db;
+    auto db = std::make_unique<FontDatabase>();
     if (old)
         ::setenv("FONTCONFIG_FILE", saved.c_str(), 1);
     else
         ::unsetenv("FONTCONFIG_FILE");
+    return db;
+}
+
+// The system configuration, pointed at the tests' own fontconfig file: the
+// generic families resolve through its aliases, a family it classes but has
+// not through its class, and an unknown family through the default family.
+TEST(FontDatabase, SystemConfigurationHonoursFontconfigFile) {
+    const std::unique_ptr<FontDatabase> conf = fonts_conf_database();
+    FontDatabase& db = *conf;
     EXPECT_EQ(file_name(db.match(query("serif"))), "NotoSerif-Regular.ttf");
     EXPECT_EQ(file_name(db.match(query("sans-serif", 700))), "NotoSans-Bold.ttf");
     EXPECT_EQ(file_name(db.match(query("monospace"))), "NotoSansMono-Regular.ttf");
@@ -131,14 +139,8 @@ TEST(FontDatabase, SystemConfigurationHonoursFontconfigFile) {
 // only there: a family with the face draws it, and a configuration without
 // the rules synthesizes nothing.
 TEST(FontDatabase, SynthesizesWhatAFamilyLacksAsFontconfigSays) {
-    const char* old = std::getenv("FONTCONFIG_FILE");
-    const std::string saved = old ? old : "";
-    ::setenv("FONTCONFIG_FILE", CASTELJAU_TESTS "/text/fonts.conf", 1);
-    FontDatabase db;
-    if (old)
-        ::setenv("FONTCONFIG_FILE", saved.c_str(), 1);
-    else
-        ::unsetenv("FONTCONFIG_FILE");
+    const std::unique_ptr<FontDatabase> conf = fonts_conf_database();
+    FontDatabase& db = *conf;
     const auto synthesis = [&](FontDatabase& d, const std::string& family, int weight,
                                FontStyle style) {
         const std::optional<FontFace> f = d.match(query(family, weight, style));
