@@ -3,10 +3,10 @@
 // PNG has, with and without tRNS, interlaced or not, and with an eXIf
 // orientation, both report the same header and the same float values, bit
 // for bit. The files are written here with libpng.
-#include "casteljau/io/detail/oiio_module.h"
 #include "casteljau/io/detail/png_read.h"
 #include "casteljau/io/image_read.h"
 #include "corpus.h"
+#include "reader_compare.h"
 
 #include <csetjmp>
 #include <cstring>
@@ -98,44 +98,10 @@ std::vector<unsigned char> make_png(const Kind& k, int w, int h, testing::Rng& r
     return out;
 }
 
-/// Both readers' header and values; the values of up to 4 channels, 4 a
-/// pixel, as image_read.cpp reads them.
-struct Read {
-    detail::ImageHeader header;
-    std::vector<float> values;
-    std::string error;
-};
-
-Read read_all(std::unique_ptr<detail::ImageReader> reader, std::string error) {
-    Read r;
-    if (!reader) {
-        r.error = error.empty() ? "no reader" : error;
-        return r;
-    }
-    r.header = reader->header();
-    r.values.assign(std::size_t(r.header.width) * std::size_t(r.header.height) * 4, -1.0f);
-    r.error = reader->read(std::min(r.header.channels, 4), r.values.data(), 4 * sizeof(float));
-    return r;
-}
-
 void expect_same_as_oiio(const std::vector<unsigned char>& png, const std::string& what) {
-    const detail::OiioModule& oiio = detail::oiio_module();
-    ASSERT_TRUE(oiio.codec) << oiio.error;
-    detail::OiioOpened theirs = oiio.codec->open("png", "memory", png, true, true);
     detail::PngOpened ours = detail::open_png("memory", png, true);
-    const Read a = read_all(std::move(ours.reader), ours.error);
-    const Read b = read_all(std::move(theirs.reader), theirs.error);
-    ASSERT_EQ(a.error, "") << what;
-    ASSERT_EQ(b.error, "") << what;
-    EXPECT_EQ(a.header.width, b.header.width) << what;
-    EXPECT_EQ(a.header.height, b.header.height) << what;
-    EXPECT_EQ(a.header.channels, b.header.channels) << what;
-    EXPECT_EQ(a.header.straight, b.header.straight) << what;
-    EXPECT_EQ(a.header.orientation, b.header.orientation) << what;
-    ASSERT_EQ(a.values.size(), b.values.size()) << what;
-    for (std::size_t i = 0; i < a.values.size(); ++i)
-        ASSERT_EQ(std::memcmp(&a.values[i], &b.values[i], sizeof(float)), 0)
-            << what << ": value " << i << " is " << a.values[i] << ", OIIO's " << b.values[i];
+    testing::expect_same_as_oiio(testing::read_all(std::move(ours.reader), ours.error), "png", png,
+                                 what);
 }
 
 TEST(PngRead, EveryColorTypeAndDepthDecodesAsOpenImageIODid) {
@@ -171,14 +137,11 @@ TEST(PngRead, EveryColorTypeAndDepthDecodesAsOpenImageIODid) {
 
 TEST(PngRead, ExifOrientationIsReadAsOpenImageIOReadIt) {
     testing::Rng rng(2505);
-    for (int o = 1; o <= 8; ++o) {
-        const auto png = make_png({PNG_COLOR_TYPE_RGB, 8, false, false, o}, 3, 2, rng);
-        expect_same_as_oiio(png, "orientation " + std::to_string(o));
-        // And applied: 5 to 8 exchange rows and columns.
-        const ImageReadResult r = decode_image(png, 100);
-        ASSERT_TRUE(r.image) << r.error;
-        EXPECT_EQ(r.image->width, o >= 5 ? 2 : 3) << o;
-    }
+    testing::expect_orientations_read_and_applied(
+        [&](int o) {
+            return make_png({PNG_COLOR_TYPE_RGB, 8, false, false, o}, 3, 2, rng);
+        },
+        expect_same_as_oiio);
 }
 
 // libpng's errors come back as messages (not a longjmp into nowhere, nor a

@@ -1,6 +1,6 @@
-// Decoding PNG (libpng, io/detail/png_read.h), JPEG, GIF, WebP and TIFF
-// (OpenImageIO, through its module: io/detail/oiio_module.h) into
-// premultiplied float RasterImages.
+// Decoding PNG (libpng, io/detail/png_read.h), JPEG (libjpeg,
+// io/detail/jpeg_read.h), GIF, WebP and TIFF (OpenImageIO, through its
+// module: io/detail/oiio_module.h) into premultiplied float RasterImages.
 //
 // Format: found from the signature (PNG, ISO/IEC 15948 5.2; JPEG's SOI
 // marker FF D8 FF, ITU T.81 B.1.1.3; GIF87a/GIF89a, GIF89a 17; RIFF....WEBP,
@@ -8,9 +8,10 @@
 // format's reader is asked: OIIO's own open() would try every reader it has
 // (RAW, DICOM, FFmpeg...) on bytes that came from an SVG.
 //
-// Size: the pixel limit is checked before any pixel is decoded. OIIO 2.4's
-// PNG, JPEG and TIFF readers read only the header in open(); its GIF reader
-// allocates the whole canvas there and its WebP reader decodes the whole
+// Size: the pixel limit is checked before any pixel is decoded. The PNG and
+// JPEG readers and OIIO 2.4's TIFF reader read only the header when
+// opened; OIIO's GIF reader allocates the whole canvas then, and its WebP
+// reader decodes the whole
 // image, so for those two the size is read from the header first: GIF's
 // logical screen (GIF89a 18), WebP's canvas (VP8X), lossless (VP8L, RFC 9649
 // 3.2.1) or lossy frame (VP8, RFC 6386 9.1) size.
@@ -29,6 +30,7 @@
 // image-orientation: from-image, the initial value), and so does this reader.
 #include "casteljau/io/image_read.h"
 
+#include "casteljau/io/detail/jpeg_read.h"
 #include "casteljau/io/detail/oiio_module.h"
 #include "casteljau/io/detail/png_read.h"
 
@@ -139,14 +141,19 @@ struct Opened {
     std::string error;
 };
 
-/// PNG with the library's own reader, every other format with OIIO's (its
-/// module loaded on first use).
+/// PNG and JPEG with the library's own readers, every other format with
+/// OIIO's (its module loaded on first use).
 Opened open_reader(const char* format, const std::string& name,
                    std::span<const unsigned char> memory, bool from_memory) {
     if (std::string_view(format) == "png") {
         detail::PngOpened png = detail::open_png(name, memory, from_memory);
         if (!png.reader) return {nullptr, "cannot decode: " + png.error};
         return {std::move(png.reader), {}};
+    }
+    if (std::string_view(format) == "jpeg") {
+        detail::JpegOpened jpeg = detail::open_jpeg(name, memory, from_memory);
+        if (!jpeg.reader) return {nullptr, "cannot decode: " + jpeg.error};
+        return {std::move(jpeg.reader), {}};
     }
     const detail::OiioModule& oiio = detail::oiio_module();
     if (!oiio.codec) return {nullptr, detail::oiio_missing(std::string("decoding ") + format)};

@@ -1,5 +1,7 @@
 #include "casteljau/io/detail/png_read.h"
 
+#include "casteljau/io/detail/exif_orientation.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -13,9 +15,6 @@ namespace {
 // The 8- and 16-bit sample scales of OIIO's integer-to-float conversion
 // (convert_type: v * (1 / max)), so that the floats are the ones it gave.
 constexpr float kScale8 = 1.0f / 255.0f, kScale16 = 1.0f / 65535.0f;
-
-// TIFF 6.0, 8: the Orientation tag, of type SHORT (3).
-constexpr unsigned kOrientationTag = 0x0112, kShort = 3;
 
 /// What libpng's callbacks share: the input, and the last error message.
 struct Source {
@@ -40,33 +39,6 @@ void read_memory(png_structp png, png_bytep out, png_size_t n) {
     if (n > s->size - s->pos) png_error(png, "the data ends before the image does");
     std::memcpy(out, s->data + s->pos, n);
     s->pos += n;
-}
-
-/// The Orientation (1 to 8) in the TIFF structure an eXIf chunk holds
-/// (PNG 3rd edition, 11.3.6.1; TIFF 6.0, 2: byte order, 42, the first IFD's
-/// offset; an IFD: a count of 12-byte entries tag, type, count, value);
-/// 1 when it has none or is malformed.
-int exif_orientation(const unsigned char* d, std::size_t n) {
-    if (n < 8 || !((d[0] == 'I' && d[1] == 'I') || (d[0] == 'M' && d[1] == 'M'))) return 1;
-    const bool le = d[0] == 'I';
-    const auto u16 = [&](std::size_t i) {
-        return le ? unsigned(d[i] | d[i + 1] << 8) : unsigned(d[i] << 8 | d[i + 1]);
-    };
-    const auto u32 = [&](std::size_t i) {
-        return le ? u16(i) | std::size_t(u16(i + 2)) << 16 : std::size_t(u16(i)) << 16 | u16(i + 2);
-    };
-    if (u16(2) != 42) return 1;
-    const std::size_t ifd = u32(4);
-    if (ifd > n - 2) return 1;
-    const std::size_t entries = u16(ifd);
-    for (std::size_t k = 0; k < entries; ++k) {
-        const std::size_t e = ifd + 2 + 12 * k;
-        if (e + 12 > n) break;
-        if (u16(e) != kOrientationTag) continue;
-        const unsigned v = u16(e + 8); // a SHORT sits at the start of the value field
-        return u16(e + 2) == kShort && u32(e + 4) >= 1 && v >= 1 && v <= 8 ? int(v) : 1;
-    }
-    return 1;
 }
 
 // The two functions below call libpng, whose errors longjmp back to their
