@@ -1,6 +1,7 @@
 // Decoding PNG (libpng, io/detail/png_read.h), JPEG (libjpeg,
-// io/detail/jpeg_read.h), GIF, WebP and TIFF (OpenImageIO, through its
-// module: io/detail/oiio_module.h) into premultiplied float RasterImages.
+// io/detail/jpeg_read.h), WebP (libwebp, io/detail/webp_read.h), GIF, TIFF
+// and animated WebP (OpenImageIO, through its module:
+// io/detail/oiio_module.h) into premultiplied float RasterImages.
 //
 // Format: found from the signature (PNG, ISO/IEC 15948 5.2; JPEG's SOI
 // marker FF D8 FF, ITU T.81 B.1.1.3; GIF87a/GIF89a, GIF89a 17; RIFF....WEBP,
@@ -33,6 +34,7 @@
 #include "casteljau/io/detail/jpeg_read.h"
 #include "casteljau/io/detail/oiio_module.h"
 #include "casteljau/io/detail/png_read.h"
+#include "casteljau/io/detail/webp_read.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -141,8 +143,8 @@ struct Opened {
     std::string error;
 };
 
-/// PNG and JPEG with the library's own readers, every other format with
-/// OIIO's (its module loaded on first use).
+/// PNG, JPEG and WebP (but animations) with the library's own readers,
+/// every other format with OIIO's (its module loaded on first use).
 Opened open_reader(const char* format, const std::string& name,
                    std::span<const unsigned char> memory, bool from_memory) {
     if (std::string_view(format) == "png") {
@@ -154,6 +156,11 @@ Opened open_reader(const char* format, const std::string& name,
         detail::JpegOpened jpeg = detail::open_jpeg(name, memory, from_memory);
         if (!jpeg.reader) return {nullptr, "cannot decode: " + jpeg.error};
         return {std::move(jpeg.reader), {}};
+    }
+    if (std::string_view(format) == "webp") {
+        detail::WebpOpened webp = detail::open_webp(name, memory, from_memory);
+        if (webp.reader) return {std::move(webp.reader), {}};
+        if (!webp.animated) return {nullptr, "cannot decode: " + webp.error};
     }
     const detail::OiioModule& oiio = detail::oiio_module();
     if (!oiio.codec) return {nullptr, detail::oiio_missing(std::string("decoding ") + format)};
