@@ -41,6 +41,16 @@ for ext in exr tif jpg; do
 done
 if CASTELJAU_OIIO_MODULE="$module" "$bin" render "$data/ok.svg" -o "$tmp/env.tif" && [[ -s "$tmp/env.tif" ]]; then pass; else fail "CASTELJAU_OIIO_MODULE=$module: no file"; fi
 expect texture 0 '' patch "$data/../../../examples/patch/wave.bpt" -o "$tmp/p.png" --texture "$tmp/ok.jpg"
+# A JPEG or WebP <image> is decoded by libjpeg or libwebp, not OpenImageIO
+# (the WebP written by oiiotool, which setup.sh installs).
+echo "<svg xmlns='http://www.w3.org/2000/svg' width='40' height='30'><image width='40' height='30' href='ok.jpg'/></svg>" > "$tmp/jpeg_image.svg"
+never_loads_oiio render_jpeg_image render "$tmp/jpeg_image.svg" -o "$tmp/jpeg_image.png"
+oiiotool "$tmp/a.png" -o "$tmp/ok.webp"
+echo "<svg xmlns='http://www.w3.org/2000/svg' width='40' height='30'><image width='40' height='30' href='ok.webp'/></svg>" > "$tmp/webp_image.svg"
+never_loads_oiio render_webp_image render "$tmp/webp_image.svg" -o "$tmp/webp_image.png"
+for kind in jpeg webp; do
+    [[ "$(LD_DEBUG= "$bin" render "$tmp/${kind}_image.svg" -o "$tmp/${kind}_image.png" 2>&1)" == "" && -s "$tmp/${kind}_image.png" ]] && pass || fail "render_${kind}_image: warnings or no file"
+done
 
 # Without the module: the message says what needed it and where it was
 # looked for; status 1; no file, and an existing one untouched.
