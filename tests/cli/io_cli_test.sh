@@ -26,6 +26,7 @@ never_loads_oiio() {
 never_loads_oiio flatten flatten --path 'M0 0 C 10 10 20 0 30 10'
 never_loads_oiio help --help
 never_loads_oiio render_png render "$data/ok.svg" -o "$tmp/a.png"
+never_loads_oiio render_jpg render "$data/ok.svg" -o "$tmp/a.jpg"
 # A PNG <image> is decoded by libpng, not OpenImageIO.
 echo "<svg xmlns='http://www.w3.org/2000/svg' width='40' height='30'><image width='40' height='30' href='data:image/png;base64,$(base64 -w0 "$tmp/a.png")'/></svg>" > "$tmp/image.svg"
 never_loads_oiio render_png_image render "$tmp/image.svg" -o "$tmp/image.png"
@@ -33,8 +34,8 @@ never_loads_oiio render_png_image render "$tmp/image.svg" -o "$tmp/image.png"
 # The control: a format only OpenImageIO writes shows its loading in the trace.
 if grep -q 'OpenImageIO' <<<"$(loads render "$data/ok.svg" -o "$tmp/a.exr")"; then pass; else fail "exr: the trace does not show OpenImageIO loading"; fi
 
-# Each OIIO format through the module (found in the build tree, and where the
-# variable points), and JPEG read back as a texture.
+# Each format written (EXR and TIFF through the module, found in the build
+# tree and where the variable points), and JPEG read back as a texture.
 for ext in exr tif jpg; do
     expect "write_$ext" 0 '' render "$data/ok.svg" -o "$tmp/ok.$ext"
     [[ -s "$tmp/ok.$ext" ]] && pass || fail "write_$ext: no file"
@@ -61,11 +62,13 @@ if [[ $status -eq 1 && "$out" == *"writing .exr needs OpenImageIO: module libcas
 [[ "$(cat "$tmp/keep.exr")" == precious ]] && pass || fail "missing module: the existing file changed"
 out="$(CASTELJAU_OIIO_MODULE=$missing "$bin" patch "$data/../../../examples/patch/wave.bpt" -o "$tmp/q.png" --texture "$tmp/ok.jpg" 2>&1)"; status=$?
 if [[ $status -eq 1 && "$out" == *"needs OpenImageIO"* && ! -e "$tmp/q.png" ]]; then pass; else fail "missing module, texture: exit $status: $out"; fi
-# PNG needs no module.
-if CASTELJAU_OIIO_MODULE=$missing "$bin" render "$data/ok.svg" -o "$tmp/b.png" && [[ -s "$tmp/b.png" ]]; then pass; else fail "missing module, png: no file"; fi
+# PNG and JPEG need no module.
+for ext in png jpg; do
+    if CASTELJAU_OIIO_MODULE=$missing "$bin" render "$data/ok.svg" -o "$tmp/b.$ext" && [[ -s "$tmp/b.$ext" ]]; then pass; else fail "missing module, $ext: no file"; fi
+done
 # A file that is not a module: named, with the loader's reason.
 echo "not a library" > "$tmp/libfake.so"
-out="$(CASTELJAU_OIIO_MODULE=$tmp/libfake.so "$bin" render "$data/ok.svg" -o "$tmp/c.jpg" 2>&1)"; status=$?
+out="$(CASTELJAU_OIIO_MODULE=$tmp/libfake.so "$bin" render "$data/ok.svg" -o "$tmp/c.tif" 2>&1)"; status=$?
 if [[ $status -eq 1 && "$out" == *"cannot be loaded: $tmp/libfake.so"* ]]; then pass; else fail "not a module: exit $status: $out"; fi
 
 finish "io CLI"

@@ -1,6 +1,7 @@
 #include "casteljau/io/image_write.h"
 
 #include "casteljau/io/atomic_file.h"
+#include "casteljau/io/detail/jpeg_write.h"
 #include "casteljau/io/detail/oiio_module.h"
 #include "casteljau/io/png_write.h"
 #include "casteljau/paint/straight_rgba.h"
@@ -76,6 +77,37 @@ std::string write_png(const std::string& path, const ImageView& image) {
     }
 }
 
+/// JPEG by libjpeg (detail/jpeg_write.h): the first three values of each
+/// pixel as they are (JPEG has no alpha; canvas_write flattens onto white
+/// first), floats rounded to 8 bits as OpenImageIO's conversion did
+/// (v 255 + 1/2, clamped; NaN 0).
+std::string write_jpeg(const std::string& path, const ImageView& image) {
+    const bool bytes_in = image.rgba.empty();
+    const std::size_t pixels =
+        std::size_t(std::max(image.width, 0)) * std::size_t(std::max(image.height, 0));
+    const std::size_t values = bytes_in ? image.rgba8.size() : image.rgba.size();
+    if (pixels == 0 || values != 4 * pixels)
+        return path + ": cannot write a " + std::to_string(image.width) + " x " +
+               std::to_string(image.height) + " image from " + std::to_string(values) + " values";
+    try {
+        std::vector<std::uint8_t> rgb(3 * pixels);
+        for (std::size_t i = 0; i < pixels; ++i)
+            for (std::size_t c = 0; c < 3; ++c) {
+                const float v = bytes_in ? 0.0f : image.rgba[4 * i + c] * 255.0f + 0.5f;
+                rgb[3 * i + c] = bytes_in ? image.rgba8[4 * i + c]
+                                          : std::uint8_t(v >= 0.0f ? std::min(v, 255.0f) : 0.0f);
+            }
+        std::vector<unsigned char> bytes;
+        if (std::string error = detail::encode_jpeg(image.width, image.height, rgb, bytes);
+            !error.empty())
+            return path + ": " + error;
+        return write_file_atomic(fs::path(path),
+                                 {reinterpret_cast<const char*>(bytes.data()), bytes.size()});
+    } catch (const std::bad_alloc&) {
+        return path + ": out of memory";
+    }
+}
+
 } // namespace
 
 std::string image_extension(const std::string& path) {
@@ -87,10 +119,10 @@ std::string image_extension(const std::string& path) {
 
 bool stores_float(const std::string& path) { return wants_float(image_extension(path)); }
 
-// Encoded by OIIO (the module) either into memory, which write_file_atomic
-// then writes with every step checked, or straight into the temporary file.
-// Memory for JPEG and EXR: their encoders do not all report a failed write
-// (libjpeg's default handler exits the process). The file for TIFF: OIIO
+// PNG and JPEG by the library's own encoders; TIFF and EXR by OIIO (the
+// module) either into memory, which write_file_atomic then writes with
+// every step checked, or straight into the temporary file. Memory for EXR:
+// its encoder does not report a failed write. The file for TIFF: OIIO
 // 2.4's memory proxy produces a TIFF whose directory offset is wrong, and
 // libtiff reports failed writes.
 std::string write_image_atomic(const std::string& path, const ImageView& image) {
@@ -99,8 +131,8 @@ std::string write_image_atomic(const std::string& path, const ImageView& image) 
     if (fs::is_directory(dest, ec)) return path + ": is a folder, not a file";
     const std::string ext = image_extension(path);
     if (ext == ".png") return write_png(path, image);
+    if (ext == ".jpg" || ext == ".jpeg") return write_jpeg(path, image);
     const bool tiff = ext == ".tif" || ext == ".tiff", exr = ext == ".exr";
-    const bool jpeg = ext == ".jpg" || ext == ".jpeg";
     const detail::OiioModule& oiio = detail::oiio_module();
     if (!oiio.codec) return path + ": " + detail::oiio_missing("writing " + ext);
     // 8-bit values go to an 8-bit format untouched; a float format gets floats.
@@ -118,7 +150,6 @@ std::string write_image_atomic(const std::string& path, const ImageView& image) 
                                              : static_cast<const void*>(converted.data());
     const detail::OiioImage request{.width = image.width,
                                     .height = image.height,
-                                    .channels = jpeg ? 3 : 4, // JPEG has no alpha channel
                                     .float_file = float_file,
                                     .float_pixels = !as_bytes,
                                     .pixels = pixels,

@@ -1,14 +1,12 @@
 #include "casteljau/io/detail/jpeg_read.h"
 
 #include "casteljau/io/detail/exif_orientation.h"
+#include "casteljau/io/detail/jpeg_errors.h"
 
 #include <algorithm>
-#include <csetjmp>
 #include <cstdio>
 #include <cstring>
 #include <vector>
-// jpeglib.h needs FILE and size_t declared before it.
-#include <jpeglib.h>
 
 namespace casteljau::detail {
 
@@ -17,24 +15,6 @@ namespace {
 // The 8-bit sample scale of OIIO's integer-to-float conversion (v * (1 /
 // 255)), so that the floats are the ones it gave.
 constexpr float kScale8 = 1.0f / 255.0f;
-
-/// libjpeg's error manager (first: libjpeg hands its address back), where
-/// an error jumps back to, and its message.
-struct Errors {
-    jpeg_error_mgr mgr;
-    std::jmp_buf back;
-    char message[JMSG_LENGTH_MAX] = {};
-};
-
-// libjpeg reports errors here and expects no return (its default exits the
-// process): back to the setjmp of the function that called it.
-[[noreturn]] void on_error(j_common_ptr c) {
-    auto* e = reinterpret_cast<Errors*>(c->err);
-    c->err->format_message(c, e->message);
-    std::longjmp(e->back, 1);
-}
-
-void on_message(j_common_ptr) {} // warnings (data cut short): the image is still drawn
 
 /// An 8-bit sample of OIIO's CMYK to RGB conversion: x k as floats of the
 /// samples over 255, scaled back and rounded half up, clamped.
@@ -47,7 +27,7 @@ unsigned char times(unsigned char x, unsigned char k) {
 // setjmp: they hold no object with a destructor.
 
 /// Starts the decompressor on the file or the bytes; false on error.
-bool start(jpeg_decompress_struct& c, Errors& e, std::FILE* file,
+bool start(jpeg_decompress_struct& c, JpegErrors& e, std::FILE* file,
            std::span<const unsigned char> memory) {
     if (setjmp(e.back)) return false;
     jpeg_create_decompress(&c);
@@ -60,7 +40,7 @@ bool start(jpeg_decompress_struct& c, Errors& e, std::FILE* file,
 
 /// Reads the markers before the image data and sets the output color
 /// space; fills `h`. False on error.
-bool read_header(jpeg_decompress_struct& c, Errors& e, ImageHeader& h, bool& cmyk) {
+bool read_header(jpeg_decompress_struct& c, JpegErrors& e, ImageHeader& h, bool& cmyk) {
     if (setjmp(e.back)) return false;
     jpeg_save_markers(&c, JPEG_APP0 + 1, 0xffff); // EXIF
     jpeg_read_header(&c, TRUE);
@@ -83,7 +63,7 @@ bool read_header(jpeg_decompress_struct& c, Errors& e, ImageHeader& h, bool& cmy
 /// Decodes every row into `row` one at a time and its first `channels`
 /// samples (RGB for CMYK) to floats from `out`, a pixel `stride` bytes
 /// apart; then the markers after the image. False on error.
-bool read_rows(jpeg_decompress_struct& c, Errors& e, bool cmyk, int channels, JSAMPLE* row,
+bool read_rows(jpeg_decompress_struct& c, JpegErrors& e, bool cmyk, int channels, JSAMPLE* row,
                float* out, std::size_t stride) {
     if (setjmp(e.back)) return false;
     jpeg_start_decompress(&c);
@@ -119,7 +99,7 @@ class JpegReader final : public ImageReader {
     }
 
     jpeg_decompress_struct c_{};
-    Errors errors_{};
+    JpegErrors errors_{};
     std::FILE* file_ = nullptr;
     bool started_ = false, cmyk_ = false;
     ImageHeader header_;
@@ -136,9 +116,7 @@ JpegOpened open_jpeg(const std::string& name, std::span<const unsigned char> mem
         return r;
     }
     jpeg_decompress_struct& c = reader->c_;
-    c.err = jpeg_std_error(&reader->errors_.mgr);
-    reader->errors_.mgr.error_exit = on_error;
-    reader->errors_.mgr.output_message = on_message;
+    reader->errors_.attach(reinterpret_cast<j_common_ptr>(&c));
     reader->started_ = start(c, reader->errors_, reader->file_, memory);
     if (!reader->started_ || !read_header(c, reader->errors_, reader->header_, reader->cmyk_)) {
         r.error = reader->errors_.message;

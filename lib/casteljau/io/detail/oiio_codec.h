@@ -22,8 +22,8 @@
 
 namespace casteljau::detail {
 
-/// The symbol the module exports: `const OiioCodec* casteljau_oiio_codec_v1()`.
-inline constexpr const char* kOiioEntry = "casteljau_oiio_codec_v1";
+/// The symbol the module exports: `const OiioCodec* casteljau_oiio_codec_v2()`.
+inline constexpr const char* kOiioEntry = "casteljau_oiio_codec_v2";
 
 /// What a reader reports of an opened image (its first subimage).
 /// (ImageHeader and ImageReader serve the library's own PNG reader too:
@@ -56,10 +56,9 @@ struct OiioOpened {
     bool no_reader = false;              ///< OIIO has no reader for the format at all
 };
 
-/// Pixels to encode: 4 values a pixel (floats or bytes), rows from the top.
+/// Pixels to encode (TIFF, EXR): 4 values a pixel (floats or bytes), rows from the top.
 struct OiioImage {
     int width = 0, height = 0;
-    int channels = 4;          ///< channels written: 4, or 3 (the alpha dropped)
     bool float_file = false;   ///< store 32-bit float, else 8 bits a channel
     bool float_pixels = false; ///< `pixels` holds floats, else bytes
     const void* pixels = nullptr;

@@ -79,13 +79,12 @@ class Codec final : public OiioCodec {
         }
         const OIIO::TypeDesc file_type =
             image.float_file ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-        OIIO::ImageSpec spec(image.width, image.height, image.channels, file_type);
+        OIIO::ImageSpec spec(image.width, image.height, 4, file_type);
         spec.attribute("oiio:ColorSpace", image.linear ? "Linear" : "sRGB");
         // Unlabelled, OIIO takes the values as premultiplied.
         spec.attribute("oiio:UnassociatedAlpha", image.straight ? 1 : 0);
         const OIIO::TypeDesc given =
             image.float_pixels ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-        // Four values a pixel whatever the channels written (JPEG reads three of them).
         const OIIO::stride_t pixel_bytes(4 * given.size());
         std::string error;
         if (!out->open(target, spec))
@@ -102,7 +101,7 @@ class Codec final : public OiioCodec {
 } // namespace casteljau::detail
 
 extern "C" __attribute__((visibility("default"))) const casteljau::detail::OiioCodec*
-casteljau_oiio_codec_v1() {
+casteljau_oiio_codec_v2() {
     static const casteljau::detail::Codec codec;
     return &codec;
 }
