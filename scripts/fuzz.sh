@@ -25,7 +25,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"; shift || true
 targets=("$@")
-[[ ${#targets[@]} -gt 0 ]] || targets=(path_data svg_read svg_render patch_read patch_render filter_graph text_layout)
+[[ ${#targets[@]} -gt 0 ]] || targets=(path_data svg_read svg_render patch_read patch_render filter_graph text_layout image_decode)
 
 # -g1: line tables only, enough for the sanitizers' file:line stack traces.
 # FUZZ_OPT: the optimisation level (-O2; CI's short smoke builds at -O1,
