@@ -1,5 +1,5 @@
-// ImageLevels: an image's mip levels, the halvings drawn where the image is
-// drawn smaller than its size.
+// ImageLevels: an image's mip levels, which stand in for it where it is
+// drawn smaller than half its size.
 //
 // Why: a bilinear sample reads the 2 x 2 pixels around one point. Drawn at an
 // eighth of its size, an image has 64 pixels under each device pixel and the

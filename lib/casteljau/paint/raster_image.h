@@ -16,8 +16,8 @@
 // limits count (SvgOptions::max_image_pixels).
 //
 // Drawn smaller than half its size, an image is sampled from one of its
-// levels (level(), image_levels.h): halvings built on first use, kept with
-// the image, a third of its pixels more at most.
+// levels (level(), image_levels.h): the image shrunk by 2^k, built on first
+// use and kept with it, a third of its pixels more at most.
 #pragma once
 
 #include "casteljau/paint/color.h"
@@ -53,8 +53,9 @@ struct RasterImage {
                        [](const Premul& p) { return quantize(p); });
     }
 
-    /// This image halved k times (image_levels.h), k clamped to [0, the
-    /// last level, 1 x 1]; level 0 is the image itself. Built from the
+    /// Level k (image_levels.h): this image shrunk to max(1, width >> k) x
+    /// max(1, height >> k), k clamped to [0, the last level, 1 x 1]; level
+    /// 0 is the image itself. Built from the
     /// pixels on first use (they must be final by then) and kept; safe to
     /// call from several threads.
     const RasterImage& level(int k) const { return k <= 0 ? *this : levels_.get(*this, k); }
