@@ -55,9 +55,8 @@ struct RasterImage {
 
     /// Level k (image_levels.h): this image shrunk to max(1, width >> k) x
     /// max(1, height >> k), k clamped to [0, the last level, 1 x 1]; level
-    /// 0 is the image itself. Built from the
-    /// pixels on first use (they must be final by then) and kept; safe to
-    /// call from several threads.
+    /// 0 is the image itself. Built from the pixels on first use (they must
+    /// be final by then) and kept; safe to call from several threads.
     const RasterImage& level(int k) const { return k <= 0 ? *this : levels_.get(*this, k); }
 
   private:
