@@ -158,6 +158,13 @@ TEST(FontDatabase, SynthesizesWhatAFamilyLacksAsFontconfigSays) {
     EXPECT_EQ(synthesis(db, "Noto Mono", 700, FontStyle::Italic), (FontSynthesis{true, 0.2}));
     EXPECT_EQ(synthesis(db, "Noto Sans", 700, FontStyle::Italic), FontSynthesis{});
     EXPECT_EQ(synthesis(db, "Noto Sans Mono", 400, FontStyle::Normal), FontSynthesis{});
+    // A character's fallback too (fontconfig's sorted fonts are prepared
+    // for the query once one is chosen): Devanagari has no italic face.
+    const std::optional<FontFace> nagari =
+        db.fallback(query("Noto Sans Mono", 400, FontStyle::Italic), U'\u0928');
+    ASSERT_TRUE(nagari);
+    EXPECT_EQ(file_name(nagari), "NotoSansDevanagari-Regular.ttf");
+    EXPECT_EQ(nagari->synthesis, (FontSynthesis{false, 0.2}));
     // Loaded apart from the face drawn as it is.
     const auto plain = db.font(*db.match(query("Noto Mono")));
     const auto bold = db.font(*db.match(query("Noto Mono", 700)));
