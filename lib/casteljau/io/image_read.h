@@ -31,8 +31,8 @@ ImageReadResult read_image_file(const std::string& path, std::size_t max_pixels)
 /// Errors name no source: the caller knows where the bytes came from.
 ImageReadResult decode_image(std::span<const unsigned char> bytes, std::size_t max_pixels);
 
-/// Whether OpenImageIO, which decodes every image format (and encodes all
-/// but PNG), can be loaded (it is loaded on first use: see
+/// Whether OpenImageIO, which decodes GIF, TIFF and animated WebP (and
+/// encodes TIFF and EXR), can be loaded (it is loaded on first use: see
 /// io/detail/oiio_module.h); when it cannot, `why`, if given, says why.
 /// For telling a missing installation from a bad file after a failure.
 bool openimageio_available(std::string* why = nullptr);

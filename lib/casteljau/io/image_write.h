@@ -1,6 +1,7 @@
 // Writing images, atomically: PNG by the library's own encoder
-// (png_write.h), every other format through OpenImageIO, loaded on first use
-// (io/detail/oiio_module.h; without it such a write fails with a message).
+// (png_write.h), JPEG by libjpeg (detail/jpeg_write.h), every other format
+// through OpenImageIO, loaded on first use (io/detail/oiio_module.h;
+// without it such a write fails with a message).
 //
 // The format follows the file extension (png, tif/tiff, exr, jpg/jpeg; anything
 // else OpenImageIO knows). 8-bit formats get float values quantised with
