@@ -42,6 +42,8 @@ for ext in exr tif jpg; do
 done
 if CASTELJAU_OIIO_MODULE="$module" "$bin" render "$data/ok.svg" -o "$tmp/env.tif" && [[ -s "$tmp/env.tif" ]]; then pass; else fail "CASTELJAU_OIIO_MODULE=$module: no file"; fi
 expect texture 0 '' patch "$data/../../../examples/patch/wave.bpt" -o "$tmp/p.png" --texture "$tmp/ok.jpg"
+expect texture_tif 0 '' patch "$data/../../../examples/patch/wave.bpt" -o "$tmp/p.png" --texture "$tmp/ok.tif"
+never_loads_oiio patch_jpeg_texture patch "$data/../../../examples/patch/wave.bpt" -o "$tmp/p.png" --texture "$tmp/ok.jpg"
 # A JPEG or WebP <image> is decoded by libjpeg or libwebp, not OpenImageIO
 # (the WebP written by oiiotool, which setup.sh installs).
 echo "<svg xmlns='http://www.w3.org/2000/svg' width='40' height='30'><image width='40' height='30' href='ok.jpg'/></svg>" > "$tmp/jpeg_image.svg"
@@ -60,7 +62,7 @@ echo precious > "$tmp/keep.exr"
 out="$(CASTELJAU_OIIO_MODULE=$missing "$bin" render "$data/ok.svg" -o "$tmp/keep.exr" 2>&1)"; status=$?
 if [[ $status -eq 1 && "$out" == *"writing .exr needs OpenImageIO: module libcasteljau_oiio.so not found (searched $missing"* ]]; then pass; else fail "missing module, exr: exit $status: $out"; fi
 [[ "$(cat "$tmp/keep.exr")" == precious ]] && pass || fail "missing module: the existing file changed"
-out="$(CASTELJAU_OIIO_MODULE=$missing "$bin" patch "$data/../../../examples/patch/wave.bpt" -o "$tmp/q.png" --texture "$tmp/ok.jpg" 2>&1)"; status=$?
+out="$(CASTELJAU_OIIO_MODULE=$missing "$bin" patch "$data/../../../examples/patch/wave.bpt" -o "$tmp/q.png" --texture "$tmp/ok.tif" 2>&1)"; status=$?
 if [[ $status -eq 1 && "$out" == *"needs OpenImageIO"* && ! -e "$tmp/q.png" ]]; then pass; else fail "missing module, texture: exit $status: $out"; fi
 # PNG and JPEG need no module.
 for ext in png jpg; do

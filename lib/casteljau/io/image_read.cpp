@@ -259,6 +259,17 @@ ImageReadResult read_image_file(const std::string& path, std::size_t max_pixels)
     return r;
 }
 
+bool decodes_without_openimageio(const std::string& path) {
+    unsigned char head[kHeadBytes];
+    std::ifstream file(path, std::ios::binary);
+    file.read(reinterpret_cast<char*>(head), kHeadBytes);
+    if (!file && !file.eof()) return false;
+    const char* format = sniff_format({head, std::size_t(file.gcount())});
+    if (!format) return false;
+    const std::string_view f(format);
+    return f == "png" || f == "jpeg" || f == "webp";
+}
+
 ImageReadResult decode_image(std::span<const unsigned char> bytes, std::size_t max_pixels) {
     return decode(bytes.first(std::min(bytes.size(), kHeadBytes)), "memory", bytes, true,
                   max_pixels);

@@ -31,6 +31,11 @@ ImageReadResult read_image_file(const std::string& path, std::size_t max_pixels)
 /// Errors name no source: the caller knows where the bytes came from.
 ImageReadResult decode_image(std::span<const unsigned char> bytes, std::size_t max_pixels);
 
+/// Whether the image file at `path` is one the library decodes itself (PNG,
+/// JPEG, WebP, known by their signatures): read_image_file then loads no
+/// OpenImageIO, but for an animated WebP. False when it cannot be read.
+bool decodes_without_openimageio(const std::string& path);
+
 /// Whether OpenImageIO, which decodes GIF, TIFF and animated WebP (and
 /// encodes TIFF and EXR), can be loaded (it is loaded on first use: see
 /// io/detail/oiio_module.h); when it cannot, `why`, if given, says why.

@@ -1,6 +1,7 @@
 #include "casteljau/render3d/texture.h"
 
 #include "casteljau/io/detail/oiio_module.h"
+#include "casteljau/io/image_read.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,17 +33,14 @@ float srgb_to_linear(float c) {
 } // namespace
 
 std::string Texture::load(const std::string& path) {
+    if (decodes_without_openimageio(path)) return load_decoded(path);
     const detail::OiioModule& oiio = detail::oiio_module();
     if (!oiio.codec) return path + ": " + detail::oiio_missing("reading a texture");
     // Any format OIIO reads; alpha, unused, as OIIO gives it (premultiplied).
     detail::OiioOpened in = oiio.codec->open(nullptr, path, {}, false, false);
     if (!in.reader) return path + ": cannot read the texture (" + in.error + ")";
     const detail::ImageHeader& spec = in.reader->header();
-    // The same pixel limits as output images: 16384 a side, 2^26 pixels.
-    if (spec.width < 1 || spec.height < 1 || spec.width > 16384 || spec.height > 16384 ||
-        double(spec.width) * spec.height > double(1 << 26))
-        return path + ": texture size " + std::to_string(spec.width) + " x " +
-               std::to_string(spec.height) + " is outside 1..16384 a side, 2^26 pixels";
+    if (const std::string e = size_error(path, spec.width, spec.height); !e.empty()) return e;
     const int channels = spec.channels;
     std::vector<float> data(std::size_t(spec.width) * spec.height * channels);
     if (const std::string e = in.reader->read(channels, data.data(), sizeof(float) * channels);
@@ -58,6 +56,29 @@ std::string Texture::load(const std::string& path) {
         px_[i] = {c[0], c[1], c[2]};
     }
     return {};
+}
+
+std::string Texture::load_decoded(const std::string& path) {
+    const ImageReadResult r = read_image_file(path, kMaxTexturePixels);
+    if (!r.image) return r.error; // it names the path
+    const RasterImage& im = *r.image;
+    if (const std::string e = size_error(path, im.width, im.height); !e.empty()) return e;
+    w_ = im.width;
+    h_ = im.height;
+    px_.resize(im.pixels.size());
+    // Premultiplied sRGB-encoded values, as OIIO gave them, to linear.
+    const auto linear = [](float v) { return std::clamp(srgb_to_linear(v), 0.0f, 1.0f); };
+    for (std::size_t i = 0; i < px_.size(); ++i)
+        px_[i] = {linear(im.pixels[i].r), linear(im.pixels[i].g), linear(im.pixels[i].b)};
+    return {};
+}
+
+std::string Texture::size_error(const std::string& path, int w, int h) {
+    if (w >= 1 && h >= 1 && w <= kMaxTextureSide && h <= kMaxTextureSide &&
+        double(w) * h <= double(kMaxTexturePixels))
+        return {};
+    return path + ": texture size " + std::to_string(w) + " x " + std::to_string(h) +
+           " is outside 1.." + std::to_string(kMaxTextureSide) + " a side, 2^26 pixels";
 }
 
 Rgb Texture::checker(Point st, Vec2 footprint) const {
