@@ -40,14 +40,22 @@ std::vector<float> premultiplied(std::span<const float> rgba) {
     return out;
 }
 
+/// Why `image` does not hold width x height pixels of 4 values (floats, or
+/// bytes when it has no floats); "" when it does.
+std::string shape_error(const std::string& path, const ImageView& image) {
+    const std::size_t values = image.rgba.empty() ? image.rgba8.size() : image.rgba.size();
+    if (image.width > 0 && image.height > 0 &&
+        values == std::size_t(image.width) * std::size_t(image.height) * 4)
+        return {};
+    return path + ": cannot write a " + std::to_string(image.width) + " x " +
+           std::to_string(image.height) + " image from " + std::to_string(values) + " values";
+}
+
 /// PNG by the library's own encoder.
 std::string write_png(const std::string& path, const ImageView& image) {
+    if (std::string e = shape_error(path, image); !e.empty()) return e;
     const bool bytes_in = image.rgba.empty();
-    const std::size_t n = std::size_t(std::max(image.width, 0)) * 4;
-    const std::size_t values = bytes_in ? image.rgba8.size() : image.rgba.size();
-    if (image.width <= 0 || image.height <= 0 || values != n * std::size_t(image.height))
-        return path + ": cannot write a " + std::to_string(image.width) + " x " +
-               std::to_string(image.height) + " image from " + std::to_string(values) + " values";
+    const std::size_t n = std::size_t(image.width) * 4;
     try {
         PngRows rows(image.width, image.height);
         std::vector<Premul> row(std::size_t(image.width)); // a premultiplied row, as floats
@@ -79,24 +87,16 @@ std::string write_png(const std::string& path, const ImageView& image) {
 
 /// JPEG by libjpeg (detail/jpeg_write.h): the first three values of each
 /// pixel as they are (JPEG has no alpha; canvas_write flattens onto white
-/// first), floats rounded to 8 bits as OpenImageIO's conversion did
-/// (v 255 + 1/2, clamped; NaN 0).
+/// first), floats rounded to 8 bits as for PNG (channel_to_u8).
 std::string write_jpeg(const std::string& path, const ImageView& image) {
-    const bool bytes_in = image.rgba.empty();
-    const std::size_t pixels =
-        std::size_t(std::max(image.width, 0)) * std::size_t(std::max(image.height, 0));
-    const std::size_t values = bytes_in ? image.rgba8.size() : image.rgba.size();
-    if (pixels == 0 || values != 4 * pixels)
-        return path + ": cannot write a " + std::to_string(image.width) + " x " +
-               std::to_string(image.height) + " image from " + std::to_string(values) + " values";
+    if (std::string e = shape_error(path, image); !e.empty()) return e;
+    const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
     try {
         std::vector<std::uint8_t> rgb(3 * pixels);
         for (std::size_t i = 0; i < pixels; ++i)
-            for (std::size_t c = 0; c < 3; ++c) {
-                const float v = bytes_in ? 0.0f : image.rgba[4 * i + c] * 255.0f + 0.5f;
-                rgb[3 * i + c] = bytes_in ? image.rgba8[4 * i + c]
-                                          : std::uint8_t(v >= 0.0f ? std::min(v, 255.0f) : 0.0f);
-            }
+            for (std::size_t c = 0; c < 3; ++c)
+                rgb[3 * i + c] = image.rgba.empty() ? image.rgba8[4 * i + c]
+                                                    : channel_to_u8(image.rgba[4 * i + c]);
         std::vector<unsigned char> bytes;
         if (std::string error = detail::encode_jpeg(image.width, image.height, rgb, bytes);
             !error.empty())

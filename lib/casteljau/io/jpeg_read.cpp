@@ -12,14 +12,10 @@ namespace casteljau::detail {
 
 namespace {
 
-// The 8-bit sample scale of OIIO's integer-to-float conversion (v * (1 /
-// 255)), so that the floats are the ones it gave.
-constexpr float kScale8 = 1.0f / 255.0f;
-
 /// An 8-bit sample of OIIO's CMYK to RGB conversion: x k as floats of the
 /// samples over 255, scaled back and rounded half up, clamped.
 unsigned char times(unsigned char x, unsigned char k) {
-    const float v = float(x) * kScale8 * (float(k) * kScale8) * 255.0f + 0.5f;
+    const float v = float(x) * kSampleScale8 * (float(k) * kSampleScale8) * 255.0f + 0.5f;
     return static_cast<unsigned char>(std::clamp(v, 0.0f, 255.0f));
 }
 
@@ -76,7 +72,7 @@ bool read_rows(jpeg_decompress_struct& c, JpegErrors& e, bool cmyk, int channels
                 reinterpret_cast<float*>(reinterpret_cast<char*>(out) + (y * w + x) * stride);
             const JSAMPLE* s = row + x * n;
             for (int k = 0; k < channels; ++k)
-                dst[k] = float(cmyk ? times(s[k], s[3]) : s[k]) * kScale8;
+                dst[k] = float(cmyk ? times(s[k], s[3]) : s[k]) * kSampleScale8;
         }
     }
     jpeg_finish_decompress(&c);

@@ -12,10 +12,6 @@ namespace casteljau::detail {
 
 namespace {
 
-// The 8- and 16-bit sample scales of OIIO's integer-to-float conversion
-// (convert_type: v * (1 / max)), so that the floats are the ones it gave.
-constexpr float kScale8 = 1.0f / 255.0f, kScale16 = 1.0f / 65535.0f;
-
 /// What libpng's callbacks share: the input, and the last error message.
 struct Source {
     std::FILE* file = nullptr;
@@ -89,8 +85,8 @@ void to_float(const png_bytep* rows, std::size_t w, std::size_t h, std::size_t c
             const unsigned char* src = rows[y] + x * N * (Wide ? 2 : 1);
             for (std::size_t c = 0; c < N; ++c)
                 if (c < channels)
-                    dst[c] = Wide ? float(src[2 * c] << 8 | src[2 * c + 1]) * kScale16
-                                  : float(src[c]) * kScale8;
+                    dst[c] = Wide ? float(src[2 * c] << 8 | src[2 * c + 1]) * kSampleScale16
+                                  : float(src[c]) * kSampleScale8;
         }
 }
 

@@ -9,10 +9,6 @@ namespace casteljau::detail {
 
 namespace {
 
-// The 8-bit sample scale of OIIO's integer-to-float conversion (v * (1 /
-// 255)), so that the floats are the ones it gave.
-constexpr float kScale8 = 1.0f / 255.0f;
-
 class WebpReader final : public ImageReader {
   public:
     const ImageHeader& header() const override { return header_; }
@@ -29,7 +25,7 @@ class WebpReader final : public ImageReader {
         for (std::size_t i = 0; i < w * h; ++i) {
             auto* dst = reinterpret_cast<float*>(reinterpret_cast<char*>(out) + i * stride);
             for (std::size_t c = 0; c < std::size_t(channels) && c < n; ++c)
-                dst[c] = float(samples[i * n + c]) * kScale8;
+                dst[c] = float(samples[i * n + c]) * kSampleScale8;
         }
         return {};
     }

@@ -109,8 +109,9 @@ int level_for(const Affine& to_device, int w, int h) {
     // <= 1. The slack absorbs the rounding of a map built from decimal
     // sizes (a 2048 px image drawn at 256 px is scale 2^-3, not a hair
     // above it); doubling is exact, so it accumulates nothing.
+    const int last = last_level(w, h);
     int k = 0;
-    for (double s = 2 * scale; s <= 1 + 1e-9 && k < last_level(w, h); s *= 2) ++k;
+    for (double s = 2 * scale; s <= 1 + 1e-9 && k < last; s *= 2) ++k;
     return k;
 }
 

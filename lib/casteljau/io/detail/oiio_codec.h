@@ -25,9 +25,14 @@ namespace casteljau::detail {
 /// The symbol the module exports: `const OiioCodec* casteljau_oiio_codec_v2()`.
 inline constexpr const char* kOiioEntry = "casteljau_oiio_codec_v2";
 
+/// The 8- and 16-bit sample scales of OIIO's integer-to-float conversion
+/// (convert_type: v * (1 / max)); the library's own readers use them too,
+/// so that their floats are the ones OIIO gave.
+inline constexpr float kSampleScale8 = 1.0f / 255.0f, kSampleScale16 = 1.0f / 65535.0f;
+
 /// What a reader reports of an opened image (its first subimage).
-/// (ImageHeader and ImageReader serve the library's own PNG reader too:
-/// io/detail/png_read.h.)
+/// (ImageHeader and ImageReader serve the library's own PNG, JPEG and WebP
+/// readers too: io/detail/png_read.h, jpeg_read.h, webp_read.h.)
 struct ImageHeader {
     int width = 0, height = 0, depth = 0, channels = 0;
     /// The color is straight (the reader honoured the request to keep
