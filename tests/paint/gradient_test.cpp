@@ -309,6 +309,41 @@ TEST(SvgGradient, TransformHrefInheritanceAndStops) {
     EXPECT_TRUE(warnings.empty());
 }
 
+// resvg's radialGradient/attributes-via-xlink-href-from-linearGradient: a
+// linear gradient's cy or fx is no attribute of a linear gradient, so a
+// radial one referring to it keeps its own (initial) values; the attributes
+// both kinds have (spreadMethod, units, transform, stops) are inherited
+// across kinds. Before: centred at y = 10, focal point at x = 0.
+TEST(SvgGradient, GeometryIsInheritedFromTheSameKindOnly) {
+    std::vector<SvgDiagnostic> warnings;
+    const Canvas c = render(R"svg(<svg width="100" height="100">
+        <linearGradient id="l" cy="10" fx="0" spreadMethod="reflect" gradientUnits="userSpaceOnUse">
+          <stop offset="0" stop-color="white"/><stop offset="1" stop-color="black"/></linearGradient>
+        <radialGradient id="r" href="#l" cx="50" r="20"/>
+        <rect width="100" height="100" fill="url(#r)"/></svg>)svg",
+                            &warnings);
+    // Centre (50, 50), r = 20 in user space, reflected: white at 0 and 40 px
+    // from the centre, black at 20.
+    for (const auto& [x, expect] : {std::pair{50, 0.0f}, {70, 1.0f}, {90, 0.0f}, {30, 1.0f}})
+        EXPECT_NEAR(1 - c.row(50)[x].r, expect, 0.05f) << "x " << x;
+    EXPECT_TRUE(warnings.empty());
+}
+
+// resvg's stroke/gradient-with-objectBoundingBox-and-fallback-on-lines: a
+// horizontal line has no box to map objectBoundingBox units onto, so its
+// stroke is the fallback color, or none without one. Before: none either way.
+TEST(SvgGradient, ObjectBoundingBoxUnitsOnALineTakeTheFallback) {
+    const Canvas c = render(R"svg(<svg width="40" height="40">
+        <linearGradient id="g"><stop offset="0" stop-color="red"/></linearGradient>
+        <line x1="0" y1="10" x2="40" y2="10" stroke="url(#g) #00ff00" stroke-width="4"/>
+        <line x1="0" y1="30" x2="40" y2="30" stroke="url(#g)" stroke-width="4"/>
+        <line x1="0" y1="20" x2="40" y2="21" stroke="url(#g) #00ff00" stroke-width="4"/></svg>)svg");
+    EXPECT_EQ(c.row(10)[20].g, 1.0f);
+    EXPECT_EQ(c.row(10)[20].r, 0.0f);
+    EXPECT_EQ(c.row(30)[20].a, 0.0f);
+    EXPECT_NEAR(c.row(20)[20].r, 1.0f, 1e-6f); // a slanted line has a box: the gradient
+}
+
 TEST(SvgGradient, TransparentStopIsTransparentBlack) {
     // SVG interpolates straight colors: white to `transparent` (black at
     // alpha 0) passes through gray at half alpha, as browsers and librsvg

@@ -81,13 +81,19 @@ GradientRef GradientIndex::build(pugi::xml_node node) {
             return it == by_id_.end() ? pugi::xml_node() : it->second;
         },
         is_gradient, problem);
-    const auto attr = [&](const char* name) -> pugi::xml_attribute {
+    // The attributes both kinds have come from any gradient of the chain; a
+    // kind's own geometry (x1 or cx, ...) only from gradients of that kind:
+    // on the other kind it is not that element's attribute (SVG 2 13.2.1,
+    // "attributes which are defined on the referenced element").
+    const auto attr = [&](const char* name, bool own_kind = false) -> pugi::xml_attribute {
         for (const pugi::xml_node& n : chain)
-            if (const pugi::xml_attribute a = n.attribute(name)) return a;
+            if (!own_kind || std::strcmp(n.name(), node.name()) == 0)
+                if (const pugi::xml_attribute a = n.attribute(name)) return a;
         return {};
     };
-    const auto invalid = [&](const char* name, const char* instead) {
-        problem(node, std::string(name) + ": '" + attr(name).value() + "' is invalid; " + instead);
+    const auto invalid = [&](const char* name, const char* instead, bool own_kind = false) {
+        problem(node, std::string(name) + ": '" + attr(name, own_kind).value() + "' is invalid; " +
+                          instead);
     };
     auto g = std::make_shared<Gradient>();
     g->kind = std::strcmp(node.name(), "radialGradient") == 0 ? Gradient::Kind::Radial
@@ -120,10 +126,10 @@ GradientRef GradientIndex::build(pugi::xml_node node) {
     // Coordinates: fractions of the box (percentages too) or user lengths.
     const double diag = std::sqrt((vw_ * vw_ + vh_ * vh_) / 2);
     const auto get = [&](const char* name, double fallback, double user_ref) {
-        const pugi::xml_attribute a = attr(name);
+        const pugi::xml_attribute a = attr(name, true);
         if (!a) return fallback;
         const auto v = parse_length(a.value(), g->object_bounding_box ? 1.0 : user_ref);
-        if (!v) invalid(name, "its initial value is used");
+        if (!v) invalid(name, "its initial value is used", true);
         return v.value_or(fallback);
     };
     const double w = g->object_bounding_box ? 1 : vw_, h = g->object_bounding_box ? 1 : vh_;
@@ -135,13 +141,13 @@ GradientRef GradientIndex::build(pugi::xml_node node) {
         g->center = {get("cx", 0.5 * w, vw_), get("cy", 0.5 * h, vh_)};
         g->radius = get("r", 0.5 * d, diag);
         if (g->radius < 0) {
-            invalid("r", "a negative radius is an error; 50% is used");
+            invalid("r", "a negative radius is an error; 50% is used", true);
             g->radius = 0.5 * d;
         }
         g->focal = {get("fx", g->center.x, vw_), get("fy", g->center.y, vh_)};
         g->focal_radius = get("fr", 0, diag);
         if (g->focal_radius < 0) {
-            invalid("fr", "a negative radius is an error; 0 is used");
+            invalid("fr", "a negative radius is an error; 0 is used", true);
             g->focal_radius = 0;
         }
     }

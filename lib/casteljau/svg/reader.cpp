@@ -630,7 +630,16 @@ std::optional<Reader::ResolvedPaint> Reader::paint(const pugi::xml_node& n, cons
             problem(p.where, p.message);
         if (!g.warning.empty() && warned_.insert(g.warning).second)
             warn(g.where ? g.where : n, g.warning);
-        if (g.gradient) return ResolvedPaint{{}, g.gradient, nullptr};
+        // objectBoundingBox units on a box without width or height (a
+        // horizontal or vertical line) cannot be applied (SVG 2, 14.2): as
+        // for a reference to nothing, the fallback is painted, or none, as
+        // browsers and librsvg do (the renderer would draw nothing).
+        const auto flat = [&] {
+            const Rect b = path.bounds();
+            return !(b.width() > 0 && b.height() > 0);
+        };
+        if (g.gradient && !(g.gradient->object_bounding_box && flat()))
+            return ResolvedPaint{{}, g.gradient, nullptr};
     }
     if (const auto c = resolve_paint(spec, style)) return ResolvedPaint{*c, nullptr, nullptr};
     return std::nullopt;
