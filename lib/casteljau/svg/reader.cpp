@@ -171,9 +171,12 @@ std::pair<double, double> Reader::document_size(const pugi::xml_node& root,
         const double full = box ? from_box : 100;
         std::string v = root.attribute(attr).value();
         if (v.empty() || v == "auto") return Side{full, false};
-        if (const auto len = parse_length(v, full, ctx))
-            return Side{*len, v.find('%') == std::string::npos};
-        problem(root, std::string("attribute ") + attr + ": '" + v + "' is not a length; ignored");
+        const auto len = parse_length(v, full, ctx);
+        // Negative: an error that invalidates the attribute (SVG 2, 8.2), so
+        // auto, as an unparsable value; zero is valid and disables rendering.
+        if (len && *len >= 0) return Side{*len, v.find('%') == std::string::npos};
+        problem(root, std::string("attribute ") + attr + ": '" + v + "' is " +
+                          (len ? "negative" : "not a length") + "; ignored");
         return Side{full, false};
     };
     const Side w = side("width", box ? box->w : 0), h = side("height", box ? box->h : 0);
