@@ -397,6 +397,51 @@ TEST(LayerBudget, OverItAClippedGroupIsNotDrawnAndAnOpaqueOneIsDrawnStraight) {
     EXPECT_NEAR(c.row(30)[30].b, 0.5f, 1e-6f);
 }
 
+// Context paints (SVG 2, 13.3): context-fill and context-stroke take the
+// context element's paint in its user space and with its box, whatever
+// transforms lie between it and the shape painted. Under a use that is the
+// use's box, all it draws (WPT's paint-context-004: one grid across two
+// rectangles of different heights, moved by the use's x and y).
+TEST(ContextPaint, AUsesPaintServerTakesTheUsesBoxAndSpace) {
+    const Canvas used = render(R"svg(<pattern id="grid" width="0.125" height="0.125"
+          patternContentUnits="objectBoundingBox"><rect width="0.0625" height="0.0625"/></pattern>
+        <defs><g id="rects"><rect width="32" height="64" fill="context-fill"/>
+          <rect x="32" y="6" width="32" height="58" fill="context-fill"/></g></defs>
+        <use x="18" y="18" fill="url(#grid)" href="#rects"/>)svg");
+    const Canvas direct = render(R"svg(<pattern id="grid" width="8" height="8" x="18" y="18"
+          patternUnits="userSpaceOnUse"><rect width="4" height="4"/></pattern>
+        <rect x="18" y="18" width="32" height="64" fill="url(#grid)"/>
+        <rect x="50" y="24" width="32" height="58" fill="url(#grid)"/>)svg");
+    EXPECT_LT(max_difference(used, direct), 2e-3f);
+    EXPECT_GT(used.row(20)[20].a, 0.99f); // the grid's first cell is there
+    EXPECT_EQ(used.row(20)[24].a, 0.0f);  // and the gap after it
+}
+
+// A gradient in the use's box stays one gradient across shapes that
+// transforms put side by side: black to white over the use's 100 px.
+// Before, each shape took it in its own space over a unit square.
+TEST(ContextPaint, AUsesGradientSpansWhatTheUseDraws) {
+    const Canvas c = render(R"svg(<linearGradient id="g"><stop offset="0" stop-color="black"/>
+          <stop offset="1" stop-color="white"/></linearGradient>
+        <defs><g id="two"><rect width="50" height="10" fill="context-fill"/>
+          <rect width="25" height="5" transform="translate(50 0) scale(2)" fill="context-fill"/>
+        </g></defs><use href="#two" y="40" fill="url(#g)"/>)svg");
+    for (int x : {5, 30, 49, 50, 75, 95})
+        EXPECT_NEAR(c.row(45)[x].r, (float(x) + 0.5f) / 100, 2e-3f) << "x " << x;
+}
+
+// In a marker the context element is the marked shape: its gradient, in
+// objectBoundingBox units, is the shape's over the shape's box.
+TEST(ContextPaint, AMarkersGradientIsTheMarkedShapes) {
+    const Canvas c = render(R"svg(<linearGradient id="g"><stop offset="0" stop-color="black"/>
+          <stop offset="1" stop-color="white"/></linearGradient>
+        <marker id="m" markerWidth="10" markerHeight="10" markerUnits="userSpaceOnUse" refX="5"
+          refY="5"><rect width="10" height="10" fill="context-fill"/></marker>
+        <polygon points="0,0 100,0 100,20 80,60 0,20" fill="url(#g)" marker-mid="url(#m)"/>)svg");
+    for (int x : {76, 80, 84}) // the marker at (80, 60), below the polygon
+        EXPECT_NEAR(c.row(62)[x].r, (float(x) + 0.5f) / 100, 2e-3f) << "x " << x;
+}
+
 // Layers for clips, masks, blend modes, pattern tiles and filters keep bands (and
 // threads) bit-identical to one whole-frame render.
 template <class C>

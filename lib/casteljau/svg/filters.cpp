@@ -256,7 +256,7 @@ void Reader::filter_paints(const pugi::xml_node& n, const Affine& m, Filter& f) 
     const Rect& r = f.graph.region;
     const Path path = rect_path(r.x0, r.y0, r.width(), r.height(), 0, 0);
     const auto draw = [&](const PaintSpec& spec, Group& out) {
-        const auto p = paint(n, spec, style, path);
+        const auto p = paint(n, spec, style, path, m);
         if (!p) return;
         Shape s;
         s.path = path;

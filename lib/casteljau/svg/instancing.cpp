@@ -16,8 +16,8 @@ namespace casteljau::svg_detail {
 // <symbol> or <svg> becomes a viewport of the use's width and height. A
 // reference to itself or to an element being instanced (a cycle) is a
 // problem, and nothing is drawn.
-void Reader::use(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out,
-                 int depth) {
+void Reader::use(const pugi::xml_node& n, const StyleState& parent_style, const StyleState& style,
+                 const Affine& m, Group& out, int depth) {
     const char* href = href_of(n);
     const pugi::xml_node target = href[0] == '#' ? by_id(href + 1) : pugi::xml_node();
     if (!target) {
@@ -36,12 +36,22 @@ void Reader::use(const pugi::xml_node& n, const StyleState& style, const Affine&
     const Affine moved = m * Affine::translate({at("x", vw_), at("y", vh_)});
     const std::string_view kind = target.name();
     if (clip_mode_ && !is_shape(kind)) return; // a clip path's use must name a shape
+    // The use is the context element of what it draws (SVG 2, 13.3): a
+    // gradient or pattern it is painted with lies in its user space and
+    // takes its box, what it draws (fill_box; while that very walk measures
+    // it, a color, so that its shapes are there to be measured).
+    ContextPaints paints{ResolvedPaint{{0, 0, 0, 1}, nullptr, nullptr}, std::nullopt, m};
+    if (measuring_ != n) {
+        Rect b{0, 0, 0, 0};
+        if (style.fill.from_url || style.stroke.from_url)
+            b = fill_box(n, "use", parent_style, style, false, depth);
+        if (b.is_empty()) b = Rect{0, 0, 0, 0};
+        const Path box = rect_path(b.x0, b.y0, b.width(), b.height(), 0, 0);
+        paints.fill = in_box(paint(n, style.fill, style, box, m), b);
+        paints.stroke = in_box(paint(n, style.stroke, style, box, m), b);
+    }
+    context_.push_back(std::move(paints));
     instancing_.push_back(target);
-    // The use is the context element of what it draws (SVG 2, 13.3); a
-    // gradient or pattern it is painted with has no box of its own, and
-    // takes the unit square's.
-    context_.push_back(
-        {paint(n, style.fill, style, unit_square_), paint(n, style.stroke, style, unit_square_)});
     if (kind == "symbol" || kind == "svg") {
         if (conditions_hold(target)) {
             StyleState inner = style;
@@ -291,11 +301,11 @@ void Reader::marker(const pugi::xml_node& mk, const MarkerVertex& v, const Shape
     Group g{props.opacity, {}};
     instancing_.push_back(mk);
     // The shape is the context element of its markers (SVG 2, 13.3).
-    const auto context_of = [](const auto& p) -> std::optional<ResolvedPaint> {
+    const auto context_of = [&](const auto& p) -> std::optional<ResolvedPaint> {
         if (!p) return std::nullopt;
-        return ResolvedPaint{p->color, p->gradient, p->pattern};
+        return in_box(ResolvedPaint{p->color, p->gradient, p->pattern}, s.path.bounds());
     };
-    context_.push_back({context_of(s.fill), context_of(s.stroke)});
+    context_.push_back({context_of(s.fill), context_of(s.stroke), s.transform});
     walk(mk, style, port * view, g, depth + 1);
     context_.pop_back();
     instancing_.pop_back();

@@ -477,7 +477,7 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
     } else if (name == "svg") {
         nested_viewport(n, n, style, props, m, g, depth);
     } else if (name == "use") {
-        use(n, style, m, g, depth);
+        use(n, parent_style, style, m, g, depth);
     } else if (name == "image") {
         image(n, style, m, g);
     } else if (name == "text") {
@@ -538,114 +538,6 @@ std::optional<Shape> Reader::shape(const pugi::xml_node& n, std::string_view nam
     Path path = geometry(n, name, context(style));
     if (!style.visible || path.empty()) return std::nullopt;
     return painted(n, std::move(path), style, m, props);
-}
-
-// A gradient mapped to user space units: objectBoundingBox units resolved
-// against `box`, then the whole map composed with `m`.
-std::shared_ptr<const Gradient> Reader::in_user_space(const Gradient& g, const Rect& box,
-                                                      const Affine& m) {
-    auto moved = std::make_shared<Gradient>(g);
-    Affine to_user = Affine::identity();
-    if (g.object_bounding_box)
-        to_user = Affine::translate(box.min().to_vec()) * Affine::scale(box.width(), box.height());
-    moved->transform = m * to_user * g.transform;
-    moved->object_bounding_box = false;
-    return moved;
-}
-
-Shape Reader::painted(const pugi::xml_node& n, Path path, const StyleState& style, const Affine& m,
-                      const ElementProps& props, const Path* box) {
-    Shape s;
-    s.path = std::move(path);
-    s.transform = m;
-    s.opacity = props.opacity;
-    s.source_line = line_of(n.offset_debug());
-    s.stroke_first = style.paint_order[1] < style.paint_order[0];
-    s.antialias = style.antialias;
-    if (clip_mode_) { // a clip path's shape: an opaque fill with its clip-rule
-        s.fill = Fill{{0, 0, 0, 1}, nullptr, 1, style.clip_rule, nullptr};
-        return s;
-    }
-    const Path& of = box ? *box : s.path;
-    // A gradient in objectBoundingBox units is resolved against `box` here,
-    // as the renderer would against the shape's own path.
-    const auto boxed = [&](std::shared_ptr<const Gradient> g) {
-        if (!box || !g || !g->object_bounding_box) return g;
-        return in_user_space(*g, box->bounds(), Affine::identity());
-    };
-    if (const auto p = paint(n, style.fill, style, of))
-        s.fill =
-            Fill{p->color, boxed(p->gradient), style.fill_opacity, style.fill_rule, p->pattern};
-    if (const auto p = paint(n, style.stroke, style, of); p && style.stroke_geometry.width > 0)
-        s.stroke = Stroke{p->color, boxed(p->gradient), style.stroke_opacity, style.stroke_geometry,
-                          p->pattern};
-    if (s.stroke && !s.stroke->geometry.dashes.empty()) dashes_in_path_length(n, s);
-    if (props.non_scaling_stroke && s.stroke) to_host_space(s);
-    return s;
-}
-
-// vector-effect: non-scaling-stroke (SVG 2, 13.9): the stroke is drawn in
-// the host coordinate space, the scene's device space, so its width and
-// dashes are in scene pixels whatever the transforms. The path is mapped
-// into that space and the shape's transform becomes the identity; each
-// gradient and pattern is remapped to stay where it was (to userSpaceOnUse,
-// composing the old map and, for objectBoundingBox units, the user-space box).
-void Reader::to_host_space(Shape& s) {
-    const Affine m = s.transform;
-    const Rect box = s.path.bounds();
-    const auto remap = [&](std::shared_ptr<const Gradient>& g) {
-        if (g) g = in_user_space(*g, box, m);
-    };
-    if (s.fill) remap(s.fill->gradient);
-    remap(s.stroke->gradient);
-    const auto remap_pattern = [&](std::shared_ptr<const Pattern>& p) {
-        if (!p) return;
-        auto moved = std::make_shared<Pattern>(*p); // already resolved to the user-space box
-        moved->transform = m * p->transform;
-        p = std::move(moved);
-    };
-    if (s.fill) remap_pattern(s.fill->pattern);
-    remap_pattern(s.stroke->pattern);
-    s.path.transform(m);
-    s.transform = Affine::identity();
-}
-
-std::optional<Reader::ResolvedPaint> Reader::paint(const pugi::xml_node& n, const PaintSpec& spec,
-                                                   const StyleState& style, const Path& path) {
-    if (spec.kind == PaintSpec::Kind::ContextFill || spec.kind == PaintSpec::Kind::ContextStroke) {
-        // Outside a marker or a use there is no context element: none.
-        if (context_.empty()) return std::nullopt;
-        return spec.kind == PaintSpec::Kind::ContextFill ? context_.back().fill
-                                                         : context_.back().stroke;
-    }
-    if (spec.from_url) {
-        if (const pugi::xml_node p = by_id(spec.url); p && std::strcmp(p.name(), "pattern") == 0) {
-            if (std::find(instancing_.begin(), instancing_.end(), p) != instancing_.end()) {
-                problem(n, "pattern #" + spec.url + " paints its own content; none is used");
-                return std::nullopt;
-            }
-            if (auto pattern = this->pattern(p, path, depth_))
-                return ResolvedPaint{{}, nullptr, std::move(pattern)};
-            return std::nullopt; // a disabled pattern paints nothing, with no fallback
-        }
-        const svg_detail::GradientRef g = gradients_->resolve(spec.url);
-        for (const svg_detail::GradientProblem& p : gradients_->take_problems())
-            problem(p.where, p.message);
-        if (!g.warning.empty() && warned_.insert(g.warning).second)
-            warn(g.where ? g.where : n, g.warning);
-        // objectBoundingBox units on a box without width or height (a
-        // horizontal or vertical line) cannot be applied (SVG 2, 14.2): as
-        // for a reference to nothing, the fallback is painted, or none, as
-        // browsers and librsvg do (the renderer would draw nothing).
-        const auto flat = [&] {
-            const Rect b = path.bounds();
-            return !(b.width() > 0 && b.height() > 0);
-        };
-        if (g.gradient && !(g.gradient->object_bounding_box && flat()))
-            return ResolvedPaint{{}, g.gradient, nullptr};
-    }
-    if (const auto c = resolve_paint(spec, style)) return ResolvedPaint{*c, nullptr, nullptr};
-    return std::nullopt;
 }
 
 // A required length that must not be negative: nullopt, and the element

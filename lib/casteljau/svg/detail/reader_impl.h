@@ -194,8 +194,8 @@ class Reader {
     Rect fill_box(const pugi::xml_node& n, std::string_view name, const StyleState& parent_style,
                   const StyleState& style, bool stroke, int depth);
     Affine root_transform(const ElementProps& props, double width, double height) const;
-    void use(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out,
-             int depth);
+    void use(const pugi::xml_node& n, const StyleState& parent_style, const StyleState& style,
+             const Affine& m, Group& out, int depth);
     void nested_viewport(const pugi::xml_node& n, const pugi::xml_node& sizes,
                          const StyleState& style, const ElementProps& props, const Affine& m,
                          Group& out, int depth);
@@ -296,9 +296,13 @@ class Reader {
         std::shared_ptr<const Gradient> gradient;
         std::shared_ptr<const Pattern> pattern;
     };
-    // `path` is the painted shape's, for objectBoundingBox units.
+    // `path` is the painted shape's, for objectBoundingBox units, and `m`
+    // its transform, into which a context paint's space is mapped.
     std::optional<ResolvedPaint> paint(const pugi::xml_node& n, const PaintSpec& spec,
-                                       const StyleState& style, const Path& path);
+                                       const StyleState& style, const Path& path, const Affine& m);
+    // A context element's paint (ContextPaints): a gradient in objectBoundingBox
+    // units mapped onto `box`, the element's box in its user space.
+    static std::optional<ResolvedPaint> in_box(std::optional<ResolvedPaint> p, const Rect& box);
     // <image> (svg/images.cpp): a raster image's pixels or an SVG image's
     // tree, with its own size; neither when it cannot be used.
     struct ImageSource {
@@ -355,11 +359,13 @@ class Reader {
     std::map<std::string, ImageSource> images_;                      // by href
     // The paints context-fill and context-stroke take: the shape's whose
     // markers, or the use's whose target, is being drawn (innermost last).
+    // Their gradients and patterns are in that context element's user space,
+    // `space`, their objectBoundingBox units taken from its box (SVG 2, 13.3).
     struct ContextPaints {
         std::optional<ResolvedPaint> fill, stroke;
+        Affine space;
     };
     std::vector<ContextPaints> context_;
-    Path unit_square_ = rect_path(0, 0, 1, 1, 0, 0); // a use's box, for its context paints
     int depth_ = 0;          // the nesting depth of the shape being painted, for its patterns
     bool clip_mode_ = false; // drawing a clipPath's content: opaque fills of shapes only
     bool quiet_ = false;     // style_of re-reads ancestors: their problems were told  //
