@@ -212,6 +212,23 @@ TEST(Overflow, ASymbolIsClippedToItsViewport) {
     EXPECT_GT(v.row(50)[20].a, 0.99f);
 }
 
+// overflow is not inherited, but `inherit` takes the parent's computed
+// value: visible from a group that says nothing, hidden from an svg that
+// says nothing (the UA style sheet's), what the parent says otherwise
+// (resvg's painting/overflow/inherit-on-marker; before, always hidden).
+TEST(Overflow, InheritTakesTheParentsComputedValue) {
+    const auto marked = [](const std::string& around) {
+        return render(R"svg(<svg )svg" + around + R"svg(><marker id="m" overflow="inherit"
+              markerUnits="userSpaceOnUse"><circle r="10"/></marker>
+            <path d="M20 50 H80" stroke="#00f" marker-start="url(#m)"/></svg>)svg");
+    };
+    EXPECT_GT(marked(R"(overflow="visible")").row(50)[12].a, 0.99f);
+    EXPECT_EQ(marked("").row(50)[12].a, 0.0f) << "an svg hides by default";
+    const Canvas g = render(R"svg(<g><marker id="m" overflow="inherit" markerUnits="userSpaceOnUse">
+          <circle r="10"/></marker></g><path d="M20 50 H80" stroke="#00f" marker-start="url(#m)"/>)svg");
+    EXPECT_GT(g.row(50)[12].a, 0.99f) << "a group's overflow is visible";
+}
+
 TEST(Overflow, TheClipPropertyGivesTheViewportsClipRectangle) {
     // clip: rect(top, right, bottom, left), offsets from the viewport's
     // corner, auto for its edge; it replaces the viewport's bounds as the

@@ -190,6 +190,7 @@ StyleState Reader::style_of(const pugi::xml_node& n, ElementProps& props) {
         props = {};
         apply_declarations(*it, s, next, nullptr, context(s));
         apply_declarations(*it, s, next, &props, context(next));
+        keep_own_values(next, props, it->name());
         s = std::move(next);
     }
     quiet_ = quiet;

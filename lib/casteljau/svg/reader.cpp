@@ -118,6 +118,7 @@ Scene Reader::read() {
     const std::optional<Affine> view = viewport(root, scene, context(style));
     ElementProps props;
     apply_declarations(root, style, style, &props, context(style));
+    keep_own_values(style, props, "svg");
     if (!view) return scene; // a zero-sized viewBox: nothing is drawn
     if (const std::size_t n = expanded_size(root, 0); n > options_.max_elements)
         fail(root, "more than " + std::to_string(options_.max_elements) +
@@ -450,7 +451,7 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
     ElementProps props;
     apply_declarations(n, parent_style, style, nullptr, context(parent_style));
     apply_declarations(n, parent_style, style, &props, context(style));
-    style.own_text = props.text; // what its children's inherit takes
+    keep_own_values(style, props, name);
     read_language(n, style.text);
     if (props.display_none) return;
     if (clip_mode_) { // in a clip path, only the clip-path of its children counts

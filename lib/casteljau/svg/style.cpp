@@ -469,7 +469,7 @@ std::string apply_property(std::string_view name, std::string_view value, const 
     // overflow: visible and auto show what is outside a viewport; hidden,
     // scroll and clip clip it (SVG 1.1, 14.3.3: auto is visible).
     if (name == "overflow")
-        return set(props.overflow_visible, false,
+        return set(props.overflow_visible, parent.own_overflow,
                    lookup<bool>(value, {{"visible", true},
                                         {"auto", true},
                                         {"hidden", false},

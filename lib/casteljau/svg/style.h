@@ -91,9 +91,11 @@ struct StyleState {
     /// Custom properties (svg/custom_properties.h), inherited; shared
     /// between the elements that declare none of their own.
     std::shared_ptr<const CustomProperties> custom;
-    /// The element's own values of the text properties that are not
-    /// inherited: what `inherit` takes for them in its children.
+    /// The element's own values of the properties that are not inherited
+    /// but that its children may ask for with `inherit` (keep_own_values):
+    /// the text ones, and overflow (a marker's overflow="inherit").
     TextProps own_text;
+    std::optional<bool> own_overflow;
 };
 
 /// transform-box's boxes for SVG elements (CSS Transforms 1, 6.1):
@@ -144,6 +146,17 @@ struct ElementProps {
     std::optional<Rgba> lighting_color = Rgba{1, 1, 1, 1};
     TextProps text; ///< the text properties that are not inherited
 };
+
+/// Keeps the computed values of element `name` that `inherit` takes in its
+/// children (StyleState::own_text, own_overflow), once its declarations are
+/// applied. Overflow not declared is visible, but hidden on the elements
+/// that establish a viewport (ElementProps::overflow_visible).
+inline void keep_own_values(StyleState& s, const ElementProps& props, std::string_view name) {
+    s.own_text = props.text;
+    const bool viewport = name == "svg" || name == "symbol" || name == "marker" ||
+                          name == "pattern" || name == "image";
+    s.own_overflow = props.overflow_visible.value_or(!viewport);
+}
 
 /// Applies one property. Returns "" when applied or unknown, otherwise what is
 /// wrong with the value (which is then ignored). `ctx` is the element's

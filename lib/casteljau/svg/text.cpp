@@ -160,7 +160,7 @@ bool Reader::text_span(const pugi::xml_node& e, TextReading& r, std::uint32_t pa
     ElementProps props;
     apply_declarations(e, up, span.style, nullptr, context(up));
     apply_declarations(e, up, span.style, &props, context(span.style));
-    span.style.own_text = props.text;
+    keep_own_values(span.style, props, e.name());
     if (props.display_none || !conditions_hold(e)) return false;
     xml_space(e, span.style);
     span.props = props.text;
