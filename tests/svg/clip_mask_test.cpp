@@ -372,6 +372,18 @@ TEST(BlendMode, IsolationKeepsTheBackdropOut) {
     EXPECT_NEAR(p.row(50)[75].b, 1, 1e-6);
 }
 
+// mix-blend-mode and isolation are properties without presentation
+// attributes (SVG 2, 6.6): as attributes they do nothing, as browsers and
+// librsvg read them (resvg's a-isolation-002; before, both applied).
+TEST(BlendMode, MixBlendModeAndIsolationAreNoAttributes) {
+    const Canvas c = render(R"svg(<rect width="100" height="100" fill="#00ff00"/>
+        <rect width="50" height="50" fill="#ff00ff" mix-blend-mode="multiply"/>
+        <g isolation="isolate"><rect y="50" width="50" height="50" fill="#0000ff"
+          style="mix-blend-mode:difference"/></g>)svg");
+    EXPECT_NEAR(c.row(25)[25].g, 0, 1e-6) << "magenta over green, not multiplied";
+    EXPECT_NEAR(c.row(75)[25].g, 1, 1e-6) << "difference with the green: not isolated";
+}
+
 TEST(BlendMode, PlusLighterAddsAndFeBlendRefusesIt) {
     // mix-blend-mode: plus-lighter (Compositing 2) sums the premultiplied
     // colors, clamped: red plus half-transparent green is (1, 0.5, 0) at alpha 1.

@@ -170,6 +170,18 @@ TEST(Reader, RectCornersFollowTheSpecRules) {
 // resvg's structure/svg/negative-size: a negative width or height is an
 // invalid value, ignored as an unparsable one is (auto: the viewBox's size,
 // else 100), with a warning; it was an error (exit 2). Zero stays one.
+// resvg's a-display-007: display: none on the root draws nothing, at the
+// document's size; before, it was drawn.
+TEST(Reader, DisplayNoneOnTheRootDrawsNothing) {
+    for (const char* root : {R"(width="40" height="30" display="none")",
+                             R"(width="40" height="30" style="display: none")"}) {
+        const SvgResult r = parse(R"(<rect width="5" height="5"/>)", root);
+        ASSERT_TRUE(r.scene) << r.error;
+        EXPECT_EQ(r.scene->width, 40);
+        EXPECT_TRUE(r.scene->root.children.empty()) << root;
+    }
+}
+
 TEST(Reader, ANegativeDocumentSizeIsIgnored) {
     const SvgResult r = parse(R"(<rect width="5" height="5"/>)", R"(width="-5" height="10")");
     ASSERT_TRUE(r.scene) << r.error;

@@ -157,7 +157,7 @@ GradientRef GradientIndex::build(pugi::xml_node node) {
         if (!g->stops.empty()) break;
     }
     if (g->stops.empty())
-        r.warning = "gradient without stops: painted as none";
+        r.warning = "gradient without stops: the fallback color (or none) is used";
     else
         r.gradient = std::move(g);
     return r;

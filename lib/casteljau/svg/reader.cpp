@@ -119,7 +119,8 @@ Scene Reader::read() {
     ElementProps props;
     apply_declarations(root, style, style, &props, context(style));
     keep_own_values(style, props, "svg");
-    if (!view) return scene; // a zero-sized viewBox: nothing is drawn
+    // A zero-sized viewBox, or display: none on the root: nothing is drawn.
+    if (!view || props.display_none) return scene;
     if (const std::size_t n = expanded_size(root, 0); n > options_.max_elements)
         fail(root, "more than " + std::to_string(options_.max_elements) +
                        " elements once <use> is expanded (the limit)");
@@ -251,12 +252,16 @@ Affine Reader::view_map(const pugi::xml_node& n, const ViewBox& box, double w, d
 // and must not call matched() (the sheet's declarations are matched_).
 // With `tell`, the style attribute's syntax problems are problems.
 void Reader::cascade(const pugi::xml_node& n, bool tell, const DeclarationVisitor& visit) {
-    // The shorthands marker and font are CSS's only, not presentation
-    // attributes (SVG 2, 6.6), as browsers and librsvg read them.
+    // The shorthands marker and font, and Compositing 1's mix-blend-mode and
+    // isolation, are CSS's only, not presentation attributes (SVG 2, 6.6),
+    // as browsers and librsvg read them.
+    const auto presentation = [](const char* name) {
+        for (const char* css_only : {"style", "marker", "font", "mix-blend-mode", "isolation"})
+            if (std::strcmp(name, css_only) == 0) return false;
+        return true;
+    };
     for (const pugi::xml_attribute& a : n.attributes())
-        if (std::strcmp(a.name(), "style") != 0 && std::strcmp(a.name(), "marker") != 0 &&
-            std::strcmp(a.name(), "font") != 0)
-            visit(a.name(), a.value(), "");
+        if (presentation(a.name())) visit(a.name(), a.value(), "");
     const std::vector<const CssDeclaration*>& sheet = matched(n);
     std::vector<CssDeclaration> inline_style;
     if (const pugi::xml_attribute a = n.attribute("style")) {
