@@ -250,6 +250,23 @@ TEST(Overflow, TheClipPropertyGivesTheViewportsClipRectangle) {
     EXPECT_EQ(bad.row(19)[21].a, 0.0f);
 }
 
+// resvg's a-stroke-013: a horizontal line has no box for a pattern's
+// objectBoundingBox units, so it takes the fallback color, or none; a
+// pattern in user space units needs no box. Before: none either way.
+TEST(Pattern, ObjectBoundingBoxUnitsOnALineTakeTheFallback) {
+    const Canvas c = render(R"svg(<pattern id="p" width="0.5" height="0.5">
+          <rect width="50" height="50" fill="#f00"/></pattern>
+        <pattern id="u" patternUnits="userSpaceOnUse" width="10" height="10">
+          <rect width="10" height="10" fill="#00f"/></pattern>
+        <line x1="0" y1="10" x2="100" y2="10" stroke="url(#p) #00ff00" stroke-width="4"/>
+        <line x1="0" y1="30" x2="100" y2="30" stroke="url(#p)" stroke-width="4"/>
+        <line x1="0" y1="50" x2="100" y2="50" stroke="url(#u) #00ff00" stroke-width="4"/>)svg");
+    EXPECT_EQ(c.row(10)[50].g, 1.0f);
+    EXPECT_EQ(c.row(10)[50].r, 0.0f);
+    EXPECT_EQ(c.row(30)[50].a, 0.0f);
+    EXPECT_EQ(c.row(50)[50].b, 1.0f) << "the user-space pattern";
+}
+
 TEST(Pattern, ATileFilledWhollyPaintsAsItsColor) {
     // A tile its content covers wholly is its color everywhere: no seams,
     // whatever the tile's alignment to pixels.

@@ -115,31 +115,33 @@ std::optional<Reader::ResolvedPaint> Reader::paint(const pugi::xml_node& n, cons
         }
         return p;
     }
+    // objectBoundingBox units on a box without width or height (a
+    // horizontal or vertical line) cannot be applied (SVG 2, 14.2): as for a
+    // reference to nothing, the fallback is painted, or none, as browsers
+    // and librsvg do (the renderer would draw nothing).
     if (spec.from_url) {
         if (const pugi::xml_node p = by_id(spec.url); p && std::strcmp(p.name(), "pattern") == 0) {
             if (std::find(instancing_.begin(), instancing_.end(), p) != instancing_.end()) {
                 problem(n, "pattern #" + spec.url + " paints its own content; none is used");
                 return std::nullopt;
             }
-            if (auto pattern = this->pattern(p, path, depth_))
+            bool boxless = false;
+            if (auto pattern = this->pattern(p, path, depth_, &boxless))
                 return ResolvedPaint{{}, nullptr, std::move(pattern)};
-            return std::nullopt; // a disabled pattern paints nothing, with no fallback
+            if (!boxless) return std::nullopt; // disabled: it paints nothing, with no fallback
+        } else {
+            const svg_detail::GradientRef g = gradients_->resolve(spec.url);
+            for (const svg_detail::GradientProblem& gp : gradients_->take_problems())
+                problem(gp.where, gp.message);
+            if (!g.warning.empty() && warned_.insert(g.warning).second)
+                warn(g.where ? g.where : n, g.warning);
+            const auto flat = [&] {
+                const Rect b = path.bounds();
+                return !(b.width() > 0 && b.height() > 0);
+            };
+            if (g.gradient && !(g.gradient->object_bounding_box && flat()))
+                return ResolvedPaint{{}, g.gradient, nullptr};
         }
-        const svg_detail::GradientRef g = gradients_->resolve(spec.url);
-        for (const svg_detail::GradientProblem& p : gradients_->take_problems())
-            problem(p.where, p.message);
-        if (!g.warning.empty() && warned_.insert(g.warning).second)
-            warn(g.where ? g.where : n, g.warning);
-        // objectBoundingBox units on a box without width or height (a
-        // horizontal or vertical line) cannot be applied (SVG 2, 14.2): as
-        // for a reference to nothing, the fallback is painted, or none, as
-        // browsers and librsvg do (the renderer would draw nothing).
-        const auto flat = [&] {
-            const Rect b = path.bounds();
-            return !(b.width() > 0 && b.height() > 0);
-        };
-        if (g.gradient && !(g.gradient->object_bounding_box && flat()))
-            return ResolvedPaint{{}, g.gradient, nullptr};
     }
     if (const auto c = resolve_paint(spec, style)) return ResolvedPaint{*c, nullptr, nullptr};
     return std::nullopt;

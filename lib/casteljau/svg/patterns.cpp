@@ -53,7 +53,7 @@ bool Reader::units_of(const std::vector<pugi::xml_node>& chain, const char* name
 }
 
 std::shared_ptr<const Pattern> Reader::pattern(const pugi::xml_node& pat, const Path& path,
-                                               int depth) {
+                                               int depth, bool* boxless) {
     if (const auto it = patterns_.find(pat.internal_object()); it != patterns_.end())
         return it->second;
     const std::vector<pugi::xml_node> chain = same_kind_chain(pat);
@@ -67,7 +67,10 @@ std::shared_ptr<const Pattern> Reader::pattern(const pugi::xml_node& pat, const 
         }
     const bool needs_bbox = tile_obb || (content_obb && !box);
     const Rect b = needs_bbox ? path.bounds() : Rect{0, 0, 1, 1};
-    if (!(b.width() > 0 && b.height() > 0)) return nullptr;
+    if (!(b.width() > 0 && b.height() > 0)) {
+        if (boxless) *boxless = true;
+        return nullptr;
+    }
     ElementProps props;
     const StyleState style = style_of(pat, props);
     const LengthContext ctx = context(style);

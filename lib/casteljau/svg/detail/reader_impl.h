@@ -321,8 +321,11 @@ class Reader {
     // Units attribute `name` along `chain`: objectBoundingBox (true) or
     // userSpaceOnUse; `initial_obb` when absent, or invalid (a problem).
     bool units_of(const std::vector<pugi::xml_node>& chain, const char* name, bool initial_obb);
-    // Patterns (svg/patterns.cpp): null when disabled (paints nothing).
-    std::shared_ptr<const Pattern> pattern(const pugi::xml_node& pat, const Path& path, int depth);
+    // Patterns (svg/patterns.cpp): null when disabled (paints nothing), or
+    // when its objectBoundingBox units find `path` without width or height
+    // (then `*boxless` is set, if given).
+    std::shared_ptr<const Pattern> pattern(const pugi::xml_node& pat, const Path& path, int depth,
+                                           bool* boxless = nullptr);
     std::optional<double> non_negative(const pugi::xml_node& n, const char* attr,
                                        std::optional<double> v);
     Path geometry(const pugi::xml_node& n, std::string_view name, const LengthContext& ctx);
