@@ -260,29 +260,6 @@ TEST(Reader, LimitsOnNestingAndElementCount) {
     EXPECT_NE(r.error.find("more than 10 elements"), std::string::npos) << r.error;
 }
 
-TEST(Reader, EntityDeclarationsAreAnErrorAndAPlainDoctypeIsIgnored) {
-    // A "billion laughs" bomb and an external entity: refused at the DOCTYPE,
-    // never expanded (the first would be 10^10 characters).
-    std::string bomb = "<?xml version=\"1.0\"?>\n<!DOCTYPE svg [\n<!ENTITY a \"aaaaaaaaaa\">\n";
-    for (int i = 1; i < 10; ++i)
-        bomb += "<!ENTITY a" + std::to_string(i) + " \"" + std::string(10, '&') + "\">\n";
-    bomb += "]>\n<svg width='10' height='10'><title>&a9;</title></svg>";
-    const std::string external = "<!DOCTYPE svg [<!ENTITY ext SYSTEM \"file:///etc/passwd\">]>\n"
-                                 "<svg width='10' height='10'><title>&ext;</title></svg>";
-    for (const auto& [text, expect] :
-         {std::pair{bomb, "bomb.svg:2: <!DOCTYPE>: entity declarations are not supported"},
-          std::pair{external, "bomb.svg:1: <!DOCTYPE>: entity declarations"}}) {
-        const SvgResult r = parse_svg(text, "bomb.svg");
-        EXPECT_FALSE(r.scene);
-        EXPECT_NE(r.error.find(expect), std::string::npos) << r.error;
-    }
-    const SvgResult plain = parse_svg(
-        "<!DOCTYPE svg PUBLIC \"-//W3C//DTD SVG 1.1//EN\" "
-        "\"http://www.w3.org/Graphics/SVG/1.1/DTD/svg11.dtd\">\n<svg width='10' height='10'/>",
-        "plain.svg");
-    EXPECT_TRUE(plain.scene) << plain.error;
-}
-
 TEST(Reader, AnAttributeOverTheLengthLimitIsAnError) {
     SvgOptions small;
     small.max_attribute_bytes = 100;

@@ -10,6 +10,7 @@
 #include "casteljau/svg/shapes.h"
 #include "casteljau/svg/transform_list.h"
 #include "casteljau/svg/viewport.h"
+#include "casteljau/svg/xml_entities.h"
 
 #include <cmath>
 #include <cstdio>
@@ -92,18 +93,18 @@ std::optional<double> Reader::length(const pugi::xml_node& n, const char* attr, 
 }
 
 Scene Reader::read() {
+    EntityExpansion entities = expand_entities(text_, options_.max_entity_bytes);
+    if (!entities.error.empty()) fail_at(std::ptrdiff_t(entities.offset), entities.error);
+    if (entities.changed) {
+        expanded_ = std::move(entities.text);
+        set_text(expanded_);
+    }
     pugi::xml_document doc;
     const pugi::xml_parse_result res =
         // parse_ws_pcdata: the spaces between a text's tspans are its text.
         doc.load_buffer(text_.data(), text_.size(),
                         pugi::parse_default | pugi::parse_doctype | pugi::parse_ws_pcdata);
     if (!res) fail_at(res.offset, std::string("malformed XML: ") + res.description());
-    // pugixml never expands entities nor fetches a DTD; a document that
-    // declares entities is refused rather than read without them
-    // (entity bombs, external entities).
-    for (const pugi::xml_node& n : doc.children())
-        if (n.type() == pugi::node_doctype && std::strstr(n.value(), "<!ENTITY"))
-            fail_at(n.offset_debug(), "<!DOCTYPE>: entity declarations are not supported");
     const pugi::xml_node root = root_ = doc.document_element();
     if (std::strcmp(root.name(), "svg") != 0)
         fail_at(root.offset_debug(),

@@ -49,6 +49,9 @@ struct SvgOptions {
     /// Any one attribute: 32 MiB holds a million path segments ("L1234.5
     /// 678.9" is 14 bytes, an absolute cubic about 40).
     std::size_t max_attribute_bytes = std::size_t(32) << 20;
+    /// What references to the DOCTYPE's entities add to the text, in all
+    /// (svg/xml_entities.h): past it, an entity bomb is refused.
+    std::size_t max_entity_bytes = std::size_t(16) << 20;
     double max_size = 16384; ///< document width and height, px
     /// The user's languages, for systemLanguage (conditional.h).
     std::vector<std::string> languages{"en"};

@@ -78,15 +78,9 @@ struct PrimitiveUnits {
 class Reader {
   public:
     Reader(std::string_view text, std::string name, const SvgOptions& options)
-        : text_(text), name_(std::move(name)), options_(options) {
+        : name_(std::move(name)), options_(options) {
         if (!options_.image_budget) options_.image_budget = std::make_shared<ImageBudget>();
-        for (std::size_t i = 0; i < text.size(); ++i)
-            if (text[i] == '\n') newlines_.push_back(i);
-        // Any "var(" at all (in a string or a comment too: a false yes only
-        // costs tracking custom properties).
-        for (std::size_t i = 0; i + 4 <= text.size() && !vars_; ++i)
-            vars_ = (text[i] | 0x20) == 'v' && (text[i + 1] | 0x20) == 'a' &&
-                    (text[i + 2] | 0x20) == 'r' && text[i + 3] == '(';
+        set_text(text);
     }
 
     SvgResult run() {
@@ -334,7 +328,21 @@ class Reader {
     static double measured_length(const Path& p);
     void dashes_in_path_length(const pugi::xml_node& n, Shape& s);
 
+    // The document's text (its entities expanded, read()), its line breaks.
+    void set_text(std::string_view text) {
+        text_ = text;
+        newlines_.clear();
+        for (std::size_t i = 0; i < text.size(); ++i)
+            if (text[i] == '\n') newlines_.push_back(i);
+        // Any "var(" at all (in a string or a comment too: a false yes only
+        // costs tracking custom properties).
+        vars_ = false;
+        for (std::size_t i = 0; i + 4 <= text.size() && !vars_; ++i)
+            vars_ = (text[i] | 0x20) == 'v' && (text[i + 1] | 0x20) == 'a' &&
+                    (text[i + 2] | 0x20) == 'r' && text[i + 3] == '(';
+    }
     std::string_view text_;
+    std::string expanded_; // the text, when entities were expanded
     std::string name_;
     SvgOptions options_;
     std::vector<std::size_t> newlines_;
