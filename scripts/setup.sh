@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config git
   libopenimageio-dev openimageio-tools
-  libpng-dev libtiff-dev libjpeg-dev libwebp-dev libopenexr-dev libdeflate-dev
+  libpng-dev libtiff-dev libjpeg-dev libwebp-dev libopenexr-dev libdeflate-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libpugixml-dev libcli11-dev
   librsvg2-bin python3 doxygen

@@ -1,6 +1,7 @@
 #include "casteljau/svg/reader.h"
 
 #include "casteljau/curve/path_data.h"
+#include "casteljau/io/gunzip.h"
 #include "casteljau/io/text_file.h"
 #include "casteljau/render/output_size.h"
 #include "casteljau/svg/conditional.h"
@@ -608,6 +609,18 @@ SvgResult parse_svg(std::string_view text, const std::string& name, const SvgOpt
         r.error = name + ": " + std::to_string(text.size()) + " bytes exceed the limit of " +
                   std::to_string(options.max_file_bytes);
         return r;
+    }
+    // SVGZ (io/gunzip.h), inflated under the same limit.
+    const std::span<const unsigned char> bytes(reinterpret_cast<const unsigned char*>(text.data()),
+                                               text.size());
+    if (is_gzip(bytes)) {
+        const Gunzipped svg = gunzip(bytes, options.max_file_bytes);
+        if (!svg.error.empty()) {
+            SvgResult r;
+            r.error = name + ": gzip data: " + svg.error;
+            return r;
+        }
+        return svg_detail::Reader(svg.data, name, options).run();
     }
     return svg_detail::Reader(text, name, options).run();
 }
