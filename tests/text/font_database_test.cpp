@@ -5,6 +5,7 @@
 // loaded once per face and variation. The fonts are the Debian packages the tests
 // pin (fonts-dejavu-core, fonts-noto-core), in a database of their own or
 // through tests/text/fonts.conf, never whatever the machine happens to have.
+#include "casteljau/svg/reader.h"
 #include "casteljau/text/font_database.h"
 #include "text_test_support.h"
 
@@ -132,6 +133,31 @@ TEST(FontDatabase, SystemConfigurationHonoursFontconfigFile) {
     list.families = {"No Such Font", "Courier New", "DejaVu Sans"};
     EXPECT_EQ(file_name(db.match(list)), "DejaVuSans.ttf"); // a family found comes first
     EXPECT_EQ(file_name(db.match(query("No Such Font"))), "DejaVuSerif.ttf");
+}
+
+// Text without a font-family anywhere takes the initial value, the user
+// agent's: Times New Roman, as browsers, librsvg and resvg have it, so
+// fontconfig's serif where it is missing (tests/text/fonts.conf classes it
+// so). Before: the database's default family, sans-serif.
+TEST(FontDatabase, UnstyledSvgTextIsTimesNewRomanOrItsClass) {
+    const std::unique_ptr<FontDatabase> conf = fonts_conf_database();
+    const auto ink = [&](const char* attrs) {
+        SvgOptions o;
+        o.fonts = conf.get();
+        const SvgResult r = parse_svg(
+            std::string(R"(<svg xmlns="http://www.w3.org/2000/svg" width="300" height="60">)") +
+                "<text x='5' y='40' font-size='30' " + attrs + ">Hamburg</text></svg>",
+            "t.svg", o);
+        EXPECT_TRUE(r.scene) << r.error;
+        Rect b = Rect::empty();
+        for (const Node& n : r.scene->root.children)
+            if (const Shape* sh = std::get_if<Shape>(&n.item)) b = b.united(sh->path.bounds());
+        return b;
+    };
+    const Rect plain = ink(""), serif = ink("font-family='serif'"),
+               sans = ink("font-family='sans-serif'");
+    EXPECT_EQ(plain.x1, serif.x1);
+    EXPECT_NE(plain.x1, sans.x1);
 }
 
 // Bold and italic a family lacks are synthesized where fontconfig's rules

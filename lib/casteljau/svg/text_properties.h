@@ -63,7 +63,11 @@ struct TextDecorationLines {
 
 /// The inherited text properties, computed.
 struct TextState {
-    std::vector<std::string> font_family; ///< empty: the font database's default
+    /// The initial value is the user agent's (CSS Fonts 4, 3.1): Times New
+    /// Roman, as browsers' default font, librsvg's and resvg's (serif where
+    /// the system lacks it, fontconfig's class for it). An empty list is the
+    /// font database's default family.
+    std::vector<std::string> font_family{"Times New Roman"};
     int font_weight = 400;
     FontStyle font_style = FontStyle::Normal;
     int font_stretch = 100;                 ///< percent
