@@ -142,6 +142,21 @@ TEST(Switch, DrawsTheFirstChildWhoseConditionsHold) {
     EXPECT_EQ(shapes(*read(body, none).scene)[0]->fill->color, (Rgba{0, 0, 1, 1}));
 }
 
+// draw.io's labels: a foreignObject of HTML (requiredFeatures, which SVG 2
+// no longer evaluates, so its conditions hold) and the same label as text
+// after it. A reader that cannot draw the foreignObject draws the text, as
+// librsvg and resvg do; before, the switch drew nothing (and warned).
+TEST(Switch, PassesOverAChildItCannotDraw) {
+    const SvgResult r = read(R"svg(<switch>
+        <foreignObject requiredFeatures="http://www.w3.org/TR/SVG11/feature#Extensibility"
+          width="10" height="10"><div xmlns="http://www.w3.org/1999/xhtml">Label</div></foreignObject>
+        <rect width="2" height="2" fill="lime"/></switch>)svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    EXPECT_TRUE(r.warnings.empty()) << r.warnings[0].text();
+    ASSERT_EQ(shapes(*r.scene).size(), 1u);
+    EXPECT_EQ(shapes(*r.scene)[0]->fill->color, (Rgba{0, 1, 0, 1}));
+}
+
 TEST(Conditional, LanguageTagsMatchByPrefixEitherWay) {
     const std::vector<std::string> en{"en"}, en_gb{"EN-gb"};
     EXPECT_TRUE(conditions_hold({"en-US", {}}, en));

@@ -477,8 +477,12 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
     if (group) {
         walk(n, style, m, g, depth + 1);
     } else if (name == "switch") {
+        // The first child whose conditions hold, passing over those this
+        // reader cannot draw (foreignObject: draw.io's HTML labels, whose
+        // next sibling is their text), as librsvg and resvg do, rather than
+        // drawing nothing there.
         for (const pugi::xml_node& c : n.children())
-            if (c.type() == pugi::node_element && conditions_hold(c)) {
+            if (c.type() == pugi::node_element && conditions_hold(c) && !unsupported(c.name())) {
                 element(c, style, m, g, depth + 1);
                 break;
             }
