@@ -12,6 +12,7 @@
 #include "casteljau/svg/transform_list.h"
 #include "casteljau/svg/viewport.h"
 #include "casteljau/svg/xml_entities.h"
+#include "casteljau/svg/detail/xml_namespaces.h"
 
 #include <cmath>
 #include <cstdio>
@@ -106,6 +107,7 @@ Scene Reader::read() {
         doc.load_buffer(text_.data(), text_.size(),
                         pugi::parse_default | pugi::parse_doctype | pugi::parse_ws_pcdata);
     if (!res) fail_at(res.offset, std::string("malformed XML: ") + res.description());
+    if (declares_own_prefixes(text_)) normalize_namespaces(doc); // svg:svg, ns0:rect
     const pugi::xml_node root = root_ = doc.document_element();
     if (std::strcmp(root.name(), "svg") != 0)
         fail_at(root.offset_debug(),

@@ -1,0 +1,29 @@
+// Namespace prefixes of their own for SVG and XLink (Namespaces in XML 1.0):
+// <svg:svg xmlns:svg="http://www.w3.org/2000/svg"> as XSLT and XHTML
+// documents write it, <ns0:svg xmlns:ns0=...> as Python's ElementTree does
+// unless told otherwise, an href in a prefix other than xlink. Browsers and
+// librsvg read names by namespace, not by prefix; pugixml reads names as
+// written. So, once the document is parsed, the elements of the SVG
+// namespace under another prefix take their plain (local) names, and the
+// attributes of the XLink namespace the prefix "xlink", which is what the
+// reader looks for. Other namespaces keep their prefixes: their elements
+// are foreign, and skipped. Declarations are scoped as the specification
+// says (a declaration holds for its element and what it holds, an inner one
+// hiding an outer one).
+#pragma once
+
+#include <pugixml.hpp>
+#include <string_view>
+
+namespace casteljau::svg_detail {
+
+/// Whether `text` declares a prefix that normalize_namespaces renames: one
+/// for the SVG namespace, or one other than "xlink" for XLink's (a quick
+/// test, so that most documents are not walked).
+bool declares_own_prefixes(std::string_view text);
+
+/// Renames the document's SVG elements and XLink attributes written with
+/// prefixes of their own to the reader's names (top of the file).
+void normalize_namespaces(pugi::xml_document& doc);
+
+} // namespace casteljau::svg_detail

@@ -1,0 +1,55 @@
+// Namespace prefixes of their own (svg/detail/xml_namespaces.h): SVG read by
+// namespace, as browsers and librsvg read it, not by the prefix written.
+#include "casteljau/svg/reader.h"
+
+#include <gtest/gtest.h>
+#include <string>
+#include <variant>
+
+namespace casteljau {
+namespace {
+
+int shape_count(const Group& g) {
+    int n = 0;
+    for (const Node& c : g.children)
+        n += std::holds_alternative<Shape>(c.item) ? 1 : shape_count(std::get<Group>(c.item));
+    return n;
+}
+
+// What XSLT and XHTML write (svg:), and Python's ElementTree unless told
+// otherwise (ns0:, xlink as ns1:); before, refused: "the root element is
+// <svg:svg>, not <svg>".
+TEST(XmlNamespaces, PrefixedSvgIsReadAsSvg) {
+    const SvgResult svg = parse_svg(
+        R"(<svg:svg xmlns:svg="http://www.w3.org/2000/svg" width="10" height="10">
+             <svg:rect width="5" height="5"/><svg:g><svg:circle r="2"/></svg:g></svg:svg>)",
+        "a.svg");
+    ASSERT_TRUE(svg.scene) << svg.error;
+    EXPECT_EQ(svg.scene->width, 10);
+    EXPECT_EQ(shape_count(svg.scene->root), 2);
+    const SvgResult etree = parse_svg(
+        R"(<ns0:svg xmlns:ns0="http://www.w3.org/2000/svg" xmlns:ns1="http://www.w3.org/1999/xlink"
+             width="10" height="10"><ns0:defs><ns0:rect id="r" width="5" height="5"/></ns0:defs>
+             <ns0:use ns1:href="#r" x="2"/><ns0:use ns1:href="#r" x="4"/></ns0:svg>)",
+        "b.svg");
+    ASSERT_TRUE(etree.scene) << etree.error;
+    EXPECT_TRUE(etree.warnings.empty()) << etree.warnings[0].text();
+    EXPECT_EQ(shape_count(etree.scene->root), 2) << "both uses find the rect";
+}
+
+// Scopes: a prefix means what its nearest declaration says; elements of
+// other namespaces stay foreign (not drawn), whatever their prefix.
+TEST(XmlNamespaces, PrefixesAreScopedAndOtherNamespacesStayForeign) {
+    const SvgResult r = parse_svg(
+        R"(<svg xmlns="http://www.w3.org/2000/svg" xmlns:s="http://www.w3.org/2000/svg"
+             xmlns:i="http://ns.adobe.com/AdobeIllustrator/10.0/" width="10" height="10">
+             <s:rect width="1" height="1"/><i:rect width="1" height="1"/>
+             <g xmlns:s="urn:other"><s:rect width="1" height="1"/></g>
+             <g xmlns:i="http://www.w3.org/2000/svg"><i:rect width="1" height="1"/></g></svg>)",
+        "c.svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    EXPECT_EQ(shape_count(r.scene->root), 2) << "s:rect at the top, i:rect in the last group";
+}
+
+} // namespace
+} // namespace casteljau
