@@ -39,6 +39,14 @@ TEST(Gunzip, InflatesWhatZlibDeflated) {
     z[z.size() - 1] ^= 1;
     EXPECT_EQ(gunzip(z, 1 << 20).error, "not valid gzip data");
     EXPECT_FALSE(is_gzip(std::vector<unsigned char>{'<', 's'}));
+    // Members one after another are their data one after another (RFC 1952,
+    // 2.2); anything else after a member is damage; no room is no data.
+    std::vector<unsigned char> two = gzip("<svg>"), second = gzip("</svg>");
+    two.insert(two.end(), second.begin(), second.end());
+    EXPECT_EQ(gunzip(two, 100).data, "<svg></svg>");
+    two.push_back('x');
+    EXPECT_EQ(gunzip(two, 100).error, "not valid gzip data");
+    EXPECT_EQ(gunzip(second, 0).error, "inflates to more than 0 bytes (the limit)");
 }
 
 TEST(Gunzip, ABombStopsAtTheLimitAndDamageIsAnError) {

@@ -463,6 +463,21 @@ TEST(ContextPaint, AUsesPaintServerTakesTheUsesBoxAndSpace) {
     EXPECT_EQ(used.row(20)[24].a, 0.0f);  // and the gap after it
 }
 
+// Measuring a use's box walks its content quietly; the problems it meets
+// are told by the walk that draws, once each (regression: a use painted with
+// a url() swallowed its content's warnings, and --strict let the file pass).
+TEST(ContextPaint, MeasuringAUseLosesNoWarning) {
+    const std::string body = R"svg(<linearGradient id="g"><stop/></linearGradient>
+        <linearGradient id="bad" x1="zz"><stop/></linearGradient><linearGradient id="none"/>
+        <defs><rect id="r" width="10" height="10" fill="url(#none) blue" stroke="url(#bad)"/></defs>
+        <use href="#r" fill="url(#g)"/>)svg";
+    std::vector<SvgDiagnostic> w;
+    render(body, 100, &w);
+    ASSERT_EQ(w.size(), 2u);
+    EXPECT_NE(w[0].message.find("x1: 'zz' is invalid"), std::string::npos) << w[0].text();
+    EXPECT_NE(w[1].message.find("gradient without stops"), std::string::npos) << w[1].text();
+}
+
 // A gradient in the use's box stays one gradient across shapes that
 // transforms put side by side: black to white over the use's 100 px.
 // Before, each shape took it in its own space over a unit square.

@@ -57,6 +57,38 @@ TEST(XmlEntities, ExpandedInContentAndAttributesNestedAndNowhereElse) {
         EXPECT_FALSE(expand_entities(doc, kLimit).changed) << doc;
 }
 
+// XML 1.0, 4.4.5 and 4.5: a replacement text is data in an attribute value
+// (its quotes do not end the value); character references in a literal
+// value are replaced when it is declared; the predefined entities keep
+// their meaning when declared again (4.6's own form of it).
+TEST(XmlEntities, AttributeValuesCharacterReferencesAndThePredefinedFive) {
+    const std::string dt = "<!DOCTYPE svg [<!ENTITY q '\"&lt;'><!ENTITY lt \"&#38;#60;\">"
+                           "<!ENTITY e 'caf&#xE9;&#38;'><!ENTITY bad '&#xD800;&#0;&#x;'>]>";
+    EXPECT_EQ(expanded(dt + "<svg id=\"&q;\" t='&q;'>&e;&lt;&bad;</svg>"),
+              dt + "<svg id=\"&quot;&lt;\" t='&quot;&lt;'>caf\xC3\xA9&&lt;&#xD800;&#0;&#x;</svg>");
+    const SvgResult r = parse_svg(dt + "<svg xmlns='http://www.w3.org/2000/svg' width='10' "
+                                       "height='10'><title id='&q;'/></svg>",
+                                  "q.svg");
+    EXPECT_TRUE(r.scene) << r.error; // was "malformed XML": the quote ended the value
+}
+
+// A DOCTYPE the expansion cannot read is not read without its entities:
+// in UTF-16 the file is refused, as it was before entities were expanded;
+// a malformed one is pugixml's to report.
+TEST(XmlEntities, AnUnreadableDoctypeIsNotSkipped) {
+    const std::string utf8 = "<!DOCTYPE svg [<!ENTITY st0 'fill:#0F0;'>]><svg xmlns="
+                             "'http://www.w3.org/2000/svg' width='9' height='9'><rect width='5' "
+                             "height='5' style='&st0;'/></svg>";
+    std::string utf16 = "\xFF\xFE"; // little-endian, with its byte order mark
+    for (const char c : utf8) utf16 += std::string{c, '\0'};
+    const SvgResult r = parse_svg(utf16, "u.svg");
+    EXPECT_EQ(r.error, "u.svg:1: <!DOCTYPE>: entity declarations are read in UTF-8 and "
+                       "ASCII-compatible documents only");
+    EXPECT_TRUE(parse_svg(utf8, "u.svg").scene);
+    const SvgResult broken = parse_svg("<!DOCTYPE svg [<!ENTITY a \"&a;\"><svg/>", "b.svg");
+    EXPECT_NE(broken.error.find("malformed XML"), std::string::npos) << broken.error;
+}
+
 TEST(XmlEntities, BombsCyclesAndExternalEntitiesAreRefused) {
     // "Billion laughs": 10^10 bytes, stopped at the limit, at the reference.
     std::string bomb = "<!DOCTYPE svg [\n<!ENTITY a0 \"aaaaaaaaaa\">\n";

@@ -51,5 +51,20 @@ TEST(XmlNamespaces, PrefixesAreScopedAndOtherNamespacesStayForeign) {
     EXPECT_EQ(shape_count(r.scene->root), 2) << "s:rect at the top, i:rect in the last group";
 }
 
+// An attribute in the SVG namespace (svg:fill) is not the attribute fill:
+// SVG's are in no namespace, and browsers ignore it. Inkscape declares
+// xmlns:svg in every file; a comment's "xmlns:" does not stop the scan.
+TEST(XmlNamespaces, OnlyXlinkAttributesAreRenamed) {
+    const SvgResult r = parse_svg(
+        R"(<!-- xmlns:svg = odd; don't --><svg:svg xmlns:svg="http://www.w3.org/2000/svg"
+             width="10" height="10"><svg:rect width="5" height="5" fill="blue" svg:fill="red"/>
+             </svg:svg>)",
+        "d.svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    const Shape& s = std::get<Shape>(r.scene->root.children.at(0).item);
+    ASSERT_TRUE(s.fill);
+    EXPECT_EQ(s.fill->color, (Rgba{0, 0, 1, 1}));
+}
+
 } // namespace
 } // namespace casteljau

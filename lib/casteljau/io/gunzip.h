@@ -19,7 +19,8 @@ struct Gunzipped {
     std::string error; ///< "" on success
 };
 
-/// Inflates the gzip member `data` to at most `max_bytes`.
+/// Inflates the gzip data `data` (one member or several, one after another)
+/// to at most `max_bytes`.
 Gunzipped gunzip(std::span<const unsigned char> data, std::size_t max_bytes);
 
 } // namespace casteljau

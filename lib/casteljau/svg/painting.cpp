@@ -131,10 +131,14 @@ std::optional<Reader::ResolvedPaint> Reader::paint(const pugi::xml_node& n, cons
             if (!boxless) return std::nullopt; // disabled: it paints nothing, with no fallback
         } else {
             const svg_detail::GradientRef g = gradients_->resolve(spec.url);
-            for (const svg_detail::GradientProblem& gp : gradients_->take_problems())
-                problem(gp.where, gp.message);
-            if (!g.warning.empty() && warned_.insert(g.warning).second)
-                warn(g.where ? g.where : n, g.warning);
+            // A quiet walk (fill_box's measure) leaves the gradient's problems
+            // and warning to the walk that draws, which tells them once.
+            if (!quiet_) {
+                for (const svg_detail::GradientProblem& gp : gradients_->take_problems())
+                    problem(gp.where, gp.message);
+                if (!g.warning.empty() && warned_.insert(g.warning).second)
+                    warn(g.where ? g.where : n, g.warning);
+            }
             const auto flat = [&] {
                 const Rect b = path.bounds();
                 return !(b.width() > 0 && b.height() > 0);

@@ -123,7 +123,9 @@ std::shared_ptr<const Pattern> Reader::pattern(const pugi::xml_node& pat, const 
     walk(content, content_style, content_map, out->content, depth + 1);
     instancing_.pop_back();
     vw_ = saved_w, vh_ = saved_h;
-    if (!needs_bbox) patterns_.emplace(pat.internal_object(), out);
+    // Kept unless built quietly (fill_box's measure), whose problems were
+    // not told: the walk that draws builds it again and tells them.
+    if (!needs_bbox && !quiet_) patterns_.emplace(pat.internal_object(), out);
     return out;
 }
 

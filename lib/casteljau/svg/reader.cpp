@@ -8,11 +8,11 @@
 #include "casteljau/svg/detail/ascii.h"
 #include "casteljau/svg/detail/css_pugi.h"
 #include "casteljau/svg/detail/reader_impl.h"
+#include "casteljau/svg/detail/xml_namespaces.h"
 #include "casteljau/svg/shapes.h"
 #include "casteljau/svg/transform_list.h"
 #include "casteljau/svg/viewport.h"
 #include "casteljau/svg/xml_entities.h"
-#include "casteljau/svg/detail/xml_namespaces.h"
 
 #include <cmath>
 #include <cstdio>
@@ -107,6 +107,11 @@ Scene Reader::read() {
         doc.load_buffer(text_.data(), text_.size(),
                         pugi::parse_default | pugi::parse_doctype | pugi::parse_ws_pcdata);
     if (!res) fail_at(res.offset, std::string("malformed XML: ") + res.description());
+    if (!entities.doctype) // a DOCTYPE the expansion could not read (UTF-16)
+        for (const pugi::xml_node& n : doc.children())
+            if (n.type() == pugi::node_doctype && std::strstr(n.value(), "<!ENTITY"))
+                fail_at(n.offset_debug(), "<!DOCTYPE>: entity declarations are read in "
+                                          "UTF-8 and ASCII-compatible documents only");
     if (declares_own_prefixes(text_)) normalize_namespaces(doc); // svg:svg, ns0:rect
     const pugi::xml_node root = root_ = doc.document_element();
     if (std::strcmp(root.name(), "svg") != 0)

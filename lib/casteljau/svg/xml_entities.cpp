@@ -1,6 +1,7 @@
 #include "casteljau/svg/xml_entities.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <vector>
 
@@ -50,35 +51,88 @@ std::size_t declaration_end(std::string_view s, std::size_t i) {
 }
 
 struct Entity {
-    std::string_view value; ///< the replacement text, as declared
-    bool external = false;  ///< SYSTEM or PUBLIC: never read
+    std::string value;     ///< the replacement text, its character references decoded
+    bool external = false; ///< SYSTEM or PUBLIC: never read
 };
 using Entities = std::map<std::string_view, Entity, std::less<>>;
 
+// Appends code point c as UTF-8.
+void append_utf8(std::string& out, std::uint32_t c) {
+    if (c < 0x80) {
+        out.push_back(char(c));
+    } else if (c < 0x800) {
+        out.push_back(char(0xC0 | c >> 6));
+        out.push_back(char(0x80 | (c & 0x3F)));
+    } else if (c < 0x10000) {
+        out.push_back(char(0xE0 | c >> 12));
+        out.push_back(char(0x80 | (c >> 6 & 0x3F)));
+        out.push_back(char(0x80 | (c & 0x3F)));
+    } else {
+        out.push_back(char(0xF0 | c >> 18));
+        out.push_back(char(0x80 | (c >> 12 & 0x3F)));
+        out.push_back(char(0x80 | (c >> 6 & 0x3F)));
+        out.push_back(char(0x80 | (c & 0x3F)));
+    }
+}
+
+// A literal entity value with its character references replaced, as XML
+// does when the entity is declared (4.5): <!ENTITY lt "&#38;#60;"> stands
+// for "&#60;". A reference that is not a valid character stays as written.
+std::string decode_char_refs(std::string_view v) {
+    std::string out;
+    for (std::size_t i = 0; i < v.size();) {
+        const std::size_t semi = v.compare(i, 2, "&#") == 0 ? v.find(';', i) : npos;
+        std::uint32_t c = 0;
+        bool ok = semi != npos && semi > i + 2 && semi - i <= 12;
+        const bool hex = ok && v[i + 2] == 'x';
+        for (std::size_t k = i + (hex ? 3 : 2); ok && k < semi; ++k) {
+            const char d = v[k];
+            const int digit = d >= '0' && d <= '9'          ? d - '0'
+                              : hex && d >= 'a' && d <= 'f' ? d - 'a' + 10
+                              : hex && d >= 'A' && d <= 'F' ? d - 'A' + 10
+                                                            : -1;
+            ok = digit >= 0 && c < 0x110000;
+            c = c * (hex ? 16 : 10) + std::uint32_t(std::max(digit, 0));
+        }
+        ok = ok && (!hex || semi > i + 3) && c > 0 && c < 0x110000 && !(c >= 0xD800 && c < 0xE000);
+        if (!ok) {
+            out.push_back(v[i++]);
+            continue;
+        }
+        append_utf8(out, c);
+        i = semi + 1;
+    }
+    return out;
+}
+
 // One <!ENTITY ...> declaration [i, end): a general entity's name and value
-// (the first declaration of a name binds, XML 1.0, 4.2); parameter
-// entities are the DTD's own and are passed over.
+// (the first declaration of a name binds, XML 1.0, 4.2). Parameter entities
+// are the DTD's own and are passed over, and so are declarations of the
+// predefined five (4.6 allows them; they keep their meaning, pugixml's).
 void declare(std::string_view s, std::size_t i, std::size_t end, Entities& out) {
     std::size_t k = i + 8; // past "<!ENTITY"
     while (k < end && is_space(s[k])) ++k;
     if (k < end && s[k] == '%') return;
     const std::string_view name = name_at(s, k);
-    if (name.empty()) return;
+    if (name.empty() || name == "lt" || name == "gt" || name == "amp" || name == "apos" ||
+        name == "quot")
+        return;
     k += name.size();
     while (k < end && is_space(s[k])) ++k;
     Entity e;
     if (k < end && (s[k] == '"' || s[k] == '\'')) {
         const std::size_t close = s.find(s[k], k + 1);
         if (close == npos || close >= end) return;
-        e.value = s.substr(k + 1, close - k - 1);
+        e.value = decode_char_refs(s.substr(k + 1, close - k - 1));
     } else {
         e.external = true; // SYSTEM "uri" or PUBLIC "id" "uri"
     }
-    out.emplace(name, e);
+    out.emplace(name, std::move(e));
 }
 
 // The DOCTYPE before the root element, if any: its entities, and where the
-// document's body (what follows it) starts; 0 when there is none.
+// document's body (what follows it) starts; 0 when there is none, or when it
+// is malformed (then it declares nothing here, and pugixml says where).
 std::size_t read_doctype(std::string_view s, Entities& entities) {
     std::size_t i = 0;
     if (s.substr(0, 3) == "\xEF\xBB\xBF") i = 3;
@@ -118,11 +172,18 @@ std::size_t read_doctype(std::string_view s, Entities& entities) {
             next = declaration_end(s, k);
             if (next != npos && s.compare(k, 8, "<!ENTITY") == 0) declare(s, k, next, entities);
         }
-        if (next == npos) return 0; // malformed: pugixml says where
+        if (next == npos) {
+            entities.clear();
+            return 0;
+        }
         k = next;
     }
     const std::size_t end = k < s.size() ? s.find('>', k) : npos;
-    return end == npos ? 0 : end + 1;
+    if (end == npos) {
+        entities.clear();
+        return 0;
+    }
+    return end + 1;
 }
 
 // Copies a document's body, or a replacement text, into `out` with the
@@ -132,40 +193,39 @@ class Expander {
     Expander(const Entities& entities, std::size_t max_added, std::string& out)
         : entities_(entities), max_added_(max_added), out_(out) {}
 
-    // Copies s; `body` when it is the document's (its comments, CDATA and
-    // processing instructions are copied as they are), `at` the offset of
-    // s in the document, or of the reference being expanded.
-    bool copy(std::string_view s, bool body, std::size_t at) {
+    // Where a text is copied: the document's body (comments, CDATA,
+    // processing instructions and tags told apart), an element's content,
+    // or an attribute value, where a replacement text's quotes and '<' are
+    // data (XML 1.0, 4.4.5) and so are escaped for pugixml.
+    enum class Mode { Body, Content, Attribute };
+
+    // Copies s, at offset `at` of the document (or of the reference being
+    // expanded, for a replacement text).
+    bool copy(std::string_view s, Mode mode, std::size_t at) {
         for (std::size_t i = 0; i < s.size();) {
-            const std::size_t k = s.find_first_of(body ? "<&" : "&", i);
-            out_.append(s.substr(i, k == npos ? npos : k - i));
+            const std::size_t k = s.find_first_of(mode == Mode::Body ? "<&" : "&", i);
+            append(s.substr(i, k == npos ? npos : k - i), mode);
             if (k == npos) break;
             i = k;
             if (s[i] == '<') {
-                std::size_t end = i + 1;
+                std::size_t end = npos;
                 if (s.compare(i, 4, "<!--") == 0)
                     end = past(s, i, "-->");
                 else if (s.compare(i, 9, "<![CDATA[") == 0)
                     end = past(s, i, "]]>");
-                else if (s.compare(i, 2, "<?") == 0)
-                    end = past(s, i, "?>");
+                else if (s.compare(i, 2, "<?") == 0 || s.compare(i, 2, "<!") == 0)
+                    end = past(s, i, ">");
+                else if (!tag(s, i, at)) // a start or end tag: i is past it
+                    return false;
+                else
+                    continue;
                 if (end == npos) end = s.size(); // unterminated: pugixml says so
                 out_.append(s.substr(i, end - i));
                 i = end;
                 continue;
             }
-            const std::string_view name = name_at(s, i + 1);
-            const std::size_t semi = i + 1 + name.size();
-            const auto e = name.empty() || semi >= s.size() || s[semi] != ';'
-                               ? entities_.end()
-                               : entities_.find(name);
-            if (e == entities_.end()) { // predefined, a character reference, or undeclared
-                out_.push_back('&');
-                ++i;
-                continue;
-            }
-            if (!expand(e->first, e->second, body ? at + i : at)) return false;
-            i = semi + 1;
+            if (!reference(s, i, mode == Mode::Attribute ? Mode::Attribute : Mode::Content, at))
+                return false;
         }
         return true;
     }
@@ -174,7 +234,58 @@ class Expander {
     std::size_t offset = 0;
 
   private:
-    bool expand(std::string_view name, const Entity& e, std::size_t at) {
+    void append(std::string_view t, Mode mode) {
+        if (mode != Mode::Attribute) return void(out_.append(t));
+        for (const char c : t)
+            out_.append(c == '"'    ? "&quot;"
+                        : c == '\'' ? "&apos;"
+                        : c == '<'  ? "&lt;"
+                                    : std::string(1, c));
+    }
+
+    // Copies the tag at i ("<name ...>"), expanding references inside its
+    // quoted attribute values; leaves i past it.
+    bool tag(std::string_view s, std::size_t& i, std::size_t at) {
+        char quote = 0;
+        out_.push_back('<');
+        for (++i; i < s.size();) {
+            const char c = s[i];
+            if (quote && c == '&') {
+                if (!reference(s, i, Mode::Attribute, at)) return false;
+                continue;
+            }
+            out_.push_back(c);
+            ++i;
+            if (quote) {
+                if (c == quote) quote = 0;
+            } else if (c == '"' || c == '\'') {
+                quote = c;
+            } else if (c == '>') {
+                break;
+            }
+        }
+        return true;
+    }
+
+    // The reference at s[i] == '&': a declared entity's replacement, or '&'
+    // as it is (a predefined entity, a character reference, a name declared
+    // nowhere); leaves i past what it took.
+    bool reference(std::string_view s, std::size_t& i, Mode mode, std::size_t at) {
+        const std::string_view name = name_at(s, i + 1);
+        const std::size_t semi = i + 1 + name.size();
+        const auto e = name.empty() || semi >= s.size() || s[semi] != ';' ? entities_.end()
+                                                                          : entities_.find(name);
+        if (e == entities_.end()) {
+            out_.push_back('&');
+            ++i;
+            return true;
+        }
+        if (!expand(e->first, e->second, open_.empty() ? at + i : at, mode)) return false;
+        i = semi + 1;
+        return true;
+    }
+
+    bool expand(std::string_view name, const Entity& e, std::size_t at, Mode mode) {
         const auto fail = [&](std::string what) {
             error = std::move(what), offset = at;
             return false;
@@ -192,7 +303,7 @@ class Expander {
             return fail("entity references add more than " + std::to_string(max_added_) +
                         " bytes (the limit)");
         open_.push_back(name);
-        const bool ok = copy(e.value, false, at);
+        const bool ok = copy(e.value, mode, at);
         open_.pop_back();
         return ok;
     }
@@ -209,6 +320,7 @@ EntityExpansion expand_entities(std::string_view doc, std::size_t max_added) {
     EntityExpansion r;
     Entities entities;
     const std::size_t body = read_doctype(doc, entities);
+    r.doctype = body > 0;
     if (entities.empty()) return r;
     // Nothing to do unless the body refers to one of them.
     bool referred = false;
@@ -220,7 +332,7 @@ EntityExpansion expand_entities(std::string_view doc, std::size_t max_added) {
     r.text.reserve(doc.size());
     r.text.append(doc.substr(0, body));
     Expander x(entities, max_added, r.text);
-    if (!x.copy(doc.substr(body), true, body)) {
+    if (!x.copy(doc.substr(body), Expander::Mode::Body, body)) {
         r.text.clear();
         r.error = std::move(x.error);
         r.offset = x.offset;

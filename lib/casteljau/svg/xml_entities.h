@@ -33,6 +33,10 @@ inline constexpr int kMaxEntityNesting = 16;
 
 /// The outcome of expand_entities.
 struct EntityExpansion {
+    /// Whether a DOCTYPE was found and read. The reader refuses a document
+    /// whose DOCTYPE pugixml finds and this did not (one in UTF-16: its
+    /// entities would go unexpanded).
+    bool doctype = false;
     /// Whether the document refers to any entity it declares; when not,
     /// `text` is empty and the document is read as it is.
     bool changed = false;

@@ -35,11 +35,9 @@ class Renamer : public pugi::xml_tree_walker {
         for (pugi::xml_attribute a : n.attributes()) {
             const auto [p, l] = split(a.name());
             if (p.empty() || p == "xmlns" || p == "xml") continue;
-            const std::string_view u = uri(p);
-            if (u == kXlink && p != "xlink")
-                a.set_name(("xlink:" + std::string(l)).c_str());
-            else if (u == kSvg) // an attribute in the SVG namespace is the plain one
-                a.set_name(std::string(l).c_str());
+            // svg:fill is not fill (SVG's attributes are in no namespace),
+            // so only XLink's are renamed.
+            if (p != "xlink" && uri(p) == kXlink) a.set_name(("xlink:" + std::string(l)).c_str());
         }
         return true;
     }
@@ -63,18 +61,28 @@ class Renamer : public pugi::xml_tree_walker {
 bool declares_own_prefixes(std::string_view text) {
     for (std::size_t i = text.find("xmlns:"); i != std::string_view::npos;
          i = text.find("xmlns:", i + 6)) {
-        const std::size_t eq = text.find('=', i);
-        if (eq == std::string_view::npos) return false;
-        std::string_view prefix = text.substr(i + 6, eq - i - 6);
+        // xmlns:PREFIX = "URI", spaces allowed around '='; anything else (a
+        // comment's words, a broken attribute) is passed over.
+        std::size_t k = i + 6;
+        while (k < text.size() && text[k] != '=' && text[k] != '>' && text[k] != '"' &&
+               text[k] != '\'')
+            ++k;
+        if (k >= text.size() || text[k] != '=') continue;
+        std::string_view prefix = text.substr(i + 6, k - i - 6);
         while (!prefix.empty() && (prefix.back() == ' ' || prefix.back() == '\t' ||
                                    prefix.back() == '\n' || prefix.back() == '\r'))
             prefix.remove_suffix(1);
-        const std::size_t q = text.find_first_of("\"'", eq);
-        if (q == std::string_view::npos) return false;
-        const std::size_t end = text.find(text[q], q + 1);
+        ++k;
+        while (k < text.size() &&
+               (text[k] == ' ' || text[k] == '\t' || text[k] == '\n' || text[k] == '\r'))
+            ++k;
+        if (k >= text.size() || (text[k] != '"' && text[k] != '\'')) continue;
+        const std::size_t end = text.find(text[k], k + 1);
         if (end == std::string_view::npos) return false;
-        const std::string_view uri = text.substr(q + 1, end - q - 1);
-        if (uri == kSvg || (uri == kXlink && prefix != "xlink")) return true;
+        const std::string_view uri = text.substr(k + 1, end - k - 1);
+        if ((uri == kSvg && prefix != "svg") || (uri == kXlink && prefix != "xlink") ||
+            (uri == kSvg && text.find("<svg:") != std::string_view::npos))
+            return true;
     }
     return false;
 }

@@ -6,7 +6,8 @@
 // written. So, once the document is parsed, the elements of the SVG
 // namespace under another prefix take their plain (local) names, and the
 // attributes of the XLink namespace the prefix "xlink", which is what the
-// reader looks for. Other namespaces keep their prefixes: their elements
+// reader looks for (an attribute in the SVG namespace, svg:fill, is not
+// fill, and stays foreign). Other namespaces keep their prefixes: their elements
 // are foreign, and skipped. Declarations are scoped as the specification
 // says (a declaration holds for its element and what it holds, an inner one
 // hiding an outer one).
@@ -18,8 +19,9 @@
 namespace casteljau::svg_detail {
 
 /// Whether `text` declares a prefix that normalize_namespaces renames: one
-/// for the SVG namespace, or one other than "xlink" for XLink's (a quick
-/// test, so that most documents are not walked).
+/// for the SVG namespace (but "svg" unless "<svg:" occurs: Inkscape declares
+/// it in every file and uses it nowhere), or one other than "xlink" for
+/// XLink's. A quick test, so that most documents are not walked.
 bool declares_own_prefixes(std::string_view text);
 
 /// Renames the document's SVG elements and XLink attributes written with
