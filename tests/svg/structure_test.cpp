@@ -155,6 +155,11 @@ TEST(Switch, PassesOverAChildItCannotDraw) {
     EXPECT_TRUE(r.warnings.empty()) << r.warnings[0].text();
     ASSERT_EQ(shapes(*r.scene).size(), 1u);
     EXPECT_EQ(shapes(*r.scene)[0]->fill->color, (Rgba{0, 1, 0, 1}));
+    // Without another child, the foreignObject is the one skipped, with its warning.
+    const SvgResult alone = read(R"svg(<switch><foreignObject width="1" height="1"/></switch>)svg");
+    ASSERT_TRUE(alone.scene) << alone.error;
+    ASSERT_EQ(alone.warnings.size(), 1u);
+    EXPECT_NE(alone.warnings[0].message.find("not supported yet"), std::string::npos);
 }
 
 TEST(Conditional, LanguageTagsMatchByPrefixEitherWay) {

@@ -487,12 +487,18 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
         // The first child whose conditions hold, passing over those this
         // reader cannot draw (foreignObject: draw.io's HTML labels, whose
         // next sibling is their text), as librsvg and resvg do, rather than
-        // drawing nothing there.
+        // drawing nothing there; with no other, that one is skipped with
+        // its warning.
+        pugi::xml_node chosen, passed;
         for (const pugi::xml_node& c : n.children())
-            if (c.type() == pugi::node_element && conditions_hold(c) && !unsupported(c.name())) {
-                element(c, style, m, g, depth + 1);
-                break;
+            if (c.type() == pugi::node_element && conditions_hold(c)) {
+                if (!unsupported(c.name())) {
+                    chosen = c;
+                    break;
+                }
+                if (!passed) passed = c;
             }
+        if (chosen || passed) element(chosen ? chosen : passed, style, m, g, depth + 1);
     } else if (name == "svg") {
         nested_viewport(n, n, style, props, m, g, depth);
     } else if (name == "use") {
