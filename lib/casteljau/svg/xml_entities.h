@@ -3,7 +3,8 @@
 // its content and attribute values, where the reference is replaced by the
 // text. pugixml reads a DOCTYPE without acting on it, so the references
 // are expanded here, on the document's text, before it is parsed. Adobe
-// Illustrator writes every file so: its namespaces are entities
+// Illustrator's Save As SVG writes its files so (Export As does not): its
+// namespaces are entities
 // (<!ENTITY ns_ai "http://ns.adobe.com/AdobeIllustrator/10.0/">,
 // xmlns:i="&ns_ai;"), and browsers and librsvg read them.
 //
