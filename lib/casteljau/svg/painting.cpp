@@ -37,19 +37,18 @@ Shape Reader::painted(const pugi::xml_node& n, Path path, const StyleState& styl
         s.fill = Fill{{0, 0, 0, 1}, nullptr, 1, style.clip_rule, nullptr};
         return s;
     }
+    // objectBoundingBox units against `box` when given (in_box), else the
+    // renderer takes the shape's own path.
     const Path& of = box ? *box : s.path;
-    // A gradient in objectBoundingBox units is resolved against `box` here,
-    // as the renderer would against the shape's own path.
-    const auto boxed = [&](std::shared_ptr<const Gradient> g) {
-        if (!box || !g || !g->object_bounding_box) return g;
-        return in_user_space(*g, box->bounds(), Affine::identity());
+    const auto resolved = [&](const PaintSpec& spec) {
+        std::optional<ResolvedPaint> p = paint(n, spec, style, of, m);
+        return box ? in_box(std::move(p), box->bounds()) : p;
     };
-    if (const auto p = paint(n, style.fill, style, of, m))
-        s.fill =
-            Fill{p->color, boxed(p->gradient), style.fill_opacity, style.fill_rule, p->pattern};
-    if (const auto p = paint(n, style.stroke, style, of, m); p && style.stroke_geometry.width > 0)
-        s.stroke = Stroke{p->color, boxed(p->gradient), style.stroke_opacity, style.stroke_geometry,
-                          p->pattern};
+    if (const auto p = resolved(style.fill))
+        s.fill = Fill{p->color, p->gradient, style.fill_opacity, style.fill_rule, p->pattern};
+    if (const auto p = resolved(style.stroke); p && style.stroke_geometry.width > 0)
+        s.stroke =
+            Stroke{p->color, p->gradient, style.stroke_opacity, style.stroke_geometry, p->pattern};
     if (s.stroke && !s.stroke->geometry.dashes.empty()) dashes_in_path_length(n, s);
     if (props.non_scaling_stroke && s.stroke) to_host_space(s);
     return s;

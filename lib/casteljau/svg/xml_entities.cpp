@@ -1,5 +1,7 @@
 #include "casteljau/svg/xml_entities.h"
 
+#include "casteljau/svg/detail/ascii.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <map>
@@ -10,8 +12,6 @@ namespace casteljau {
 namespace {
 
 constexpr std::size_t npos = std::string_view::npos;
-
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
 // XML's Name characters, non-ASCII ones taken whole (a UTF-8 byte >= 0x80).
 bool is_name_start(char c) {
@@ -111,14 +111,14 @@ std::string decode_char_refs(std::string_view v) {
 // predefined five (4.6 allows them; they keep their meaning, pugixml's).
 void declare(std::string_view s, std::size_t i, std::size_t end, Entities& out) {
     std::size_t k = i + 8; // past "<!ENTITY"
-    while (k < end && is_space(s[k])) ++k;
+    while (k < end && svg_detail::is_xml_space(s[k])) ++k;
     if (k < end && s[k] == '%') return;
     const std::string_view name = name_at(s, k);
     if (name.empty() || name == "lt" || name == "gt" || name == "amp" || name == "apos" ||
         name == "quot")
         return;
     k += name.size();
-    while (k < end && is_space(s[k])) ++k;
+    while (k < end && svg_detail::is_xml_space(s[k])) ++k;
     Entity e;
     if (k < end && (s[k] == '"' || s[k] == '\'')) {
         const std::size_t close = s.find(s[k], k + 1);
@@ -137,7 +137,7 @@ std::size_t read_doctype(std::string_view s, Entities& entities) {
     std::size_t i = 0;
     if (s.substr(0, 3) == "\xEF\xBB\xBF") i = 3;
     while (i < s.size()) {
-        if (is_space(s[i])) {
+        if (svg_detail::is_xml_space(s[i])) {
             ++i;
         } else if (s.compare(i, 2, "<?") == 0) {
             i = past(s, i, "?>");

@@ -1,5 +1,7 @@
 #include "casteljau/svg/detail/xml_namespaces.h"
 
+#include "casteljau/svg/detail/ascii.h"
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -68,14 +70,9 @@ bool declares_own_prefixes(std::string_view text) {
                text[k] != '\'')
             ++k;
         if (k >= text.size() || text[k] != '=') continue;
-        std::string_view prefix = text.substr(i + 6, k - i - 6);
-        while (!prefix.empty() && (prefix.back() == ' ' || prefix.back() == '\t' ||
-                                   prefix.back() == '\n' || prefix.back() == '\r'))
-            prefix.remove_suffix(1);
+        const std::string_view prefix = trim(text.substr(i + 6, k - i - 6));
         ++k;
-        while (k < text.size() &&
-               (text[k] == ' ' || text[k] == '\t' || text[k] == '\n' || text[k] == '\r'))
-            ++k;
+        while (k < text.size() && is_xml_space(text[k])) ++k;
         if (k >= text.size() || (text[k] != '"' && text[k] != '\'')) continue;
         const std::size_t end = text.find(text[k], k + 1);
         if (end == std::string_view::npos) return false;

@@ -27,6 +27,9 @@ inline bool in_css_string(std::string_view v, std::size_t& i, char& quote) {
     return true;
 }
 
+/// XML's white space (XML 1.0, 2.3: space, tab, CR, LF).
+inline bool is_xml_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
+
 /// `s` without leading and trailing whitespace.
 inline std::string_view trim(std::string_view s) {
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
