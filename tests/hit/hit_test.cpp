@@ -14,6 +14,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include <numbers>
+#include <vector>
 
 namespace casteljau {
 namespace {
@@ -173,21 +174,25 @@ TEST(Nearest, PathReportsSegmentAndParameter) {
 TEST(RectHit, MatchesDenseSampling) {
     Rng rng(5);
     int hits = 0, misses = 0;
+    const int n = 20000;
+    std::vector<Point> samples(n + 1); // each evaluated once (the test's cost)
     for (int i = 0; i < 2000; ++i) {
         const Segment s = random_segment(rng, 100);
         const Point a = rng.point(100);
         const Rect r = Rect::from_points(a, a + Vec2{rng.uniform(0, 30), rng.uniform(0, 30)});
         const bool hit = segment_intersects_rect(s, r);
         bool sampled_in = false, sampled_near = false;
-        const int n = 20000;
         double step = 0;
         for (int k = 0; k <= n; ++k) {
-            const Point p = segment_eval(s, double(k) / n);
-            if (k > 0) step = std::max(step, distance(p, segment_eval(s, double(k - 1) / n)));
-            sampled_in |= r.contains(p);
+            samples[std::size_t(k)] = segment_eval(s, double(k) / n);
+            if (k > 0)
+                step =
+                    std::max(step, distance(samples[std::size_t(k)], samples[std::size_t(k - 1)]));
+            sampled_in |= r.contains(samples[std::size_t(k)]);
         }
+        const Rect near = r.inflated(step);
         for (int k = 0; k <= n && !sampled_near; ++k)
-            sampled_near |= r.inflated(step).contains(segment_eval(s, double(k) / n));
+            sampled_near |= near.contains(samples[std::size_t(k)]);
         if (sampled_in) {
             EXPECT_TRUE(hit) << i;
         }

@@ -36,7 +36,7 @@ using Scratch = std::array<T, E == std::dynamic_extent ? kMaxPoints : E>;
 
 template <class T, std::size_t E>
 constexpr T decasteljau_eval(std::span<const T, E> p, double t) noexcept {
-    detail::Scratch<T, E> q{};
+    detail::Scratch<T, E> q; // [0, n) only, each written before it is read
     const std::size_t n = p.size();
     for (std::size_t i = 0; i < n; ++i) q[i] = p[i];
     for (std::size_t k = n - 1; k > 0; --k)
@@ -48,7 +48,7 @@ constexpr T decasteljau_eval(std::span<const T, E> p, double t) noexcept {
 template <class T, std::size_t E>
 constexpr void decasteljau_split(std::span<const T, E> p, double t, std::span<T, E> left,
                                  std::span<T, E> right) noexcept {
-    detail::Scratch<T, E> q{};
+    detail::Scratch<T, E> q; // [0, n) only, each written before it is read
     const std::size_t n = p.size();
     for (std::size_t i = 0; i < n; ++i) q[i] = p[i];
     left[0] = q[0];

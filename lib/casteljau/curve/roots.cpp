@@ -2,6 +2,7 @@
 
 #include "casteljau/curve/decasteljau.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -33,8 +34,10 @@ int solve_quadratic(double a, double b, double c, double roots[2]) noexcept {
 namespace {
 
 // A Bernstein coefficient value, so the generic de Casteljau code can split it.
+// No initializer: the stack of pieces below is 9 KB, which a default would
+// zero on every call (a third of a point-in-fill test's time).
 struct Scalar {
-    double v = 0;
+    double v;
 };
 constexpr Scalar lerp(Scalar a, Scalar b, double t) { return {(1.0 - t) * a.v + t * b.v}; }
 
@@ -51,6 +54,22 @@ bool has_sign_change(const Piece& p, std::size_t n) {
         pos |= p.c[i].v >= 0.0;
     }
     return neg && pos;
+}
+
+// Whether the piece holds exactly one root, a simple one (roots.h): its ends
+// are nonzero and of opposite signs, and its coefficients change sign once,
+// zeros skipped.
+bool isolates_one_root(const Piece& p, std::size_t n) {
+    if (!(p.c[0].v * p.c[n - 1].v < 0.0)) return false;
+    int changes = 0;
+    double last = p.c[0].v;
+    for (std::size_t i = 1; i < n; ++i) {
+        const double v = p.c[i].v;
+        if (v == 0.0) continue;
+        changes += (v < 0.0) != (last < 0.0);
+        last = v;
+    }
+    return changes == 1;
 }
 
 } // namespace
@@ -77,8 +96,22 @@ int bernstein_roots(std::span<const double> coeff, std::span<double> out) noexce
     // rounding; the budget bounds that work whatever the input.
     int budget = 64 * kRootDepth * int(n);
     while (top > 0 && count < int(out.size()) && budget-- > 0) {
-        const Piece p = stack[--top];
+        Piece p; // the n coefficients in use, not all kMaxPoints
+        const Piece& popped = stack[--top];
+        p.t0 = popped.t0, p.t1 = popped.t1, p.depth = popped.depth;
+        std::copy_n(popped.c.begin(), n, p.c.begin());
         if (!has_sign_change(p, n)) continue;
+        if (isolates_one_root(p, n)) {
+            // To 2^-kRootDepth in t, as the subdivision's depth cap resolves.
+            const double width = std::ldexp(1.0, -kRootDepth) / (p.t1 - p.t0);
+            const double u = bracketed_root(
+                [&](double x) {
+                    return decasteljau_eval(std::span<const Scalar>(p.c.data(), n), x).v;
+                },
+                0.0, 1.0, p.c[0].v, p.c[n - 1].v, width);
+            out[count++] = last = p.t0 + (p.t1 - p.t0) * u;
+            continue;
+        }
         if (p.depth == kRootDepth) {
             const double t = 0.5 * (p.t0 + p.t1);
             // Adjacent pieces of the last level can both straddle one root.

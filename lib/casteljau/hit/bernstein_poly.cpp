@@ -17,10 +17,14 @@ double BernsteinPoly::eval(double t) const {
 BernsteinPoly operator*(const BernsteinPoly& a, const BernsteinPoly& b) {
     BernsteinPoly r;
     r.degree = a.degree + b.degree;
+    // The binomials once each (C(n, i) takes i divisions), not per term.
+    std::array<double, BernsteinPoly::kMaxDegree + 1> ca, cb, inv_cr;
+    for (int i = 0; i <= a.degree; ++i) ca[std::size_t(i)] = binomial(a.degree, i) * a.c[i];
+    for (int j = 0; j <= b.degree; ++j) cb[std::size_t(j)] = binomial(b.degree, j) * b.c[j];
+    for (int k = 0; k <= r.degree; ++k) inv_cr[std::size_t(k)] = 1 / binomial(r.degree, k);
     for (int i = 0; i <= a.degree; ++i)
         for (int j = 0; j <= b.degree; ++j)
-            r.c[i + j] += binomial(a.degree, i) * binomial(b.degree, j) /
-                          binomial(r.degree, i + j) * a.c[i] * b.c[j];
+            r.c[i + j] += ca[std::size_t(i)] * cb[std::size_t(j)] * inv_cr[std::size_t(i + j)];
     return r;
 }
 

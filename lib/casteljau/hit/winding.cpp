@@ -1,5 +1,6 @@
 #include "casteljau/hit/winding.h"
 
+#include "casteljau/curve/roots.h"
 #include "casteljau/hit/bernstein_poly.h"
 
 #include <algorithm>
@@ -13,15 +14,9 @@ namespace {
 bool above(double v) { return v >= 0.0; }
 
 // The parameter in [a, b] where f changes sign (above(f(a)) != above(f(b))),
-// by bisection: 64 halvings exhaust a double's resolution in [0, 1].
+// to a double's resolution (bracketed_root counts 0 as above, as above() does).
 double sign_change(const BernsteinPoly& f, double a, double b) {
-    const bool at_a = above(f.eval(a));
-    for (int i = 0; i < 64; ++i) {
-        const double m = 0.5 * (a + b);
-        if (m <= a || m >= b) break;
-        (above(f.eval(m)) == at_a ? a : b) = m;
-    }
-    return 0.5 * (a + b);
+    return bracketed_root([&](double t) { return f.eval(t); }, a, b, f.eval(a), f.eval(b), 0.0);
 }
 
 } // namespace
@@ -37,6 +32,10 @@ int segment_crossings(const Segment& s, Point p) {
     if (all_above || all_below ||
         std::all_of(xs.begin(), xs.end(), [](double x) { return x <= 0; }))
         return 0;
+    // Wholly right of p (x_i w_i > 0): every sign change of f counts, and
+    // their sum, +1 up and -1 down in turn, telescopes to the ends' difference.
+    if (std::all_of(xs.begin(), xs.end(), [](double x) { return x > 0; }))
+        return int(above(coef.back())) - int(above(coef.front()));
     // Samples: both ends and the middles between consecutive roots; f keeps
     // its sign between two samples except across one root or at an end.
     std::array<double, BernsteinPoly::kMaxDegree> roots{};
