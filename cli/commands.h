@@ -3,8 +3,11 @@
 // contract in DESIGN.md: 0 success, 2 bad usage or input, 1 other failure.
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <functional>
+
+namespace CLI {
+class App; // <CLI/CLI.hpp>: only the files that add options compile it (5 s each)
+}
 
 namespace casteljau::cli {
 

@@ -3,6 +3,7 @@
 #include "casteljau/svg/reader.h"
 #include "commands.h"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <map>
 

@@ -6,10 +6,13 @@
 #include "casteljau/scene/scene.h"
 #include "casteljau/svg/reader.h"
 
-#include <CLI/CLI.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
+
+namespace CLI {
+class App; // <CLI/CLI.hpp>: only the files that add options compile it (5 s each)
+}
 
 namespace casteljau::cli {
 

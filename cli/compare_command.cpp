@@ -13,6 +13,7 @@
 #include "commands.h"
 #include "common.h"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>

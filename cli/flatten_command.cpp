@@ -8,6 +8,7 @@
 #include "common.h"
 #include "json.h"
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,7 @@
 // casteljau: curves and surface patches to pixels. A thin layer over the library.
 #include "commands.h"
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 

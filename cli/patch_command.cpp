@@ -22,6 +22,7 @@
 #include "common.h"
 #include "json.h"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
 #include <cmath>

@@ -16,6 +16,7 @@
 #include "render_file.h"
 #include "render_inputs.h"
 
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
