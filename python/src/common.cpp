@@ -38,6 +38,12 @@ double finite(double v, const char* what) {
     return v;
 }
 
+FillRule to_rule(const std::string& s) {
+    if (s == "nonzero") return FillRule::NonZero;
+    if (s == "evenodd") return FillRule::EvenOdd;
+    value_error("rule '" + s + "': expected 'nonzero' or 'evenodd'");
+}
+
 Point to_point(py::handle h, const char* what) {
     if (!PySequence_Check(h.ptr()) || py::isinstance<py::str>(h) || py::isinstance<py::bytes>(h))
         throw py::type_error(std::string(what) + ": expected a point (x, y)");

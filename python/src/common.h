@@ -6,6 +6,7 @@
 #include "casteljau/flatten/flatten.h"
 #include "casteljau/geom/affine.h"
 #include "casteljau/paint/color.h"
+#include "casteljau/raster/sweep.h"
 
 #include <optional>
 #include <pybind11/numpy.h>
@@ -19,6 +20,7 @@ namespace py = pybind11;
 
 /// The submodules' registration, in the order module.cpp calls them.
 void bind_geometry(py::module_& m);
+void bind_hit(py::module_& m); // after bind_geometry: adds to Path
 void bind_paint(py::module_& m);
 void bind_drawing(py::module_& m);
 void bind_render(py::module_& m);
@@ -33,6 +35,9 @@ void bind_patch(py::module_& m);
 
 /// A finite coordinate, or ValueError naming `what`.
 double finite(double v, const char* what);
+
+/// "nonzero" or "evenodd"; ValueError otherwise.
+FillRule to_rule(const std::string& s);
 
 /// A point from any sequence of two numbers ((x, y), a list, a 1-D array).
 Point to_point(py::handle h, const char* what);

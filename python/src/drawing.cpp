@@ -41,12 +41,6 @@ Affine checked_transform(const std::optional<Affine>& t) {
     return m;
 }
 
-FillRule to_rule(const std::string& s) {
-    if (s == "nonzero") return FillRule::NonZero;
-    if (s == "evenodd") return FillRule::EvenOdd;
-    value_error("rule '" + s + "': expected 'nonzero' or 'evenodd'");
-}
-
 py::tuple rect(const PixelRect& r) { return py::make_tuple(r.x0, r.y0, r.x1, r.y1); }
 
 Drawing::ShapeId checked_id(const Drawing& d, py::ssize_t id) {

@@ -7,6 +7,7 @@ PYBIND11_MODULE(_casteljau, m) {
     m.doc() = "Casteljau's C++ core: exact curve flattening, stroking, antialiased rendering "
               "and surface tessellation. Use it through the package `casteljau`.";
     bind_geometry(m);
+    bind_hit(m);
     bind_paint(m);
     bind_drawing(m);
     bind_render(m);

@@ -4,11 +4,13 @@
 // point q), the squared distance |C|^2 is stationary where
 //   g(t) = (P - q W) . (P' W - P W') = 0,
 // since C' = (P' W - P W') / W^2 and C - q = (P - q W) / W with W > 0: the
-// numerator of C . C' up to the positive factor W^3. g has degree 3n - 1
-// (2 for lines, 5 for quadratics and conics, 8 for cubics). Every local minimum in (0, 1) is a root
-// of g, so the nearest point is at one of g's roots (by subdivision to 2^-40, roots.h) or an end
-// point: all are evaluated and the closest wins. This finds the global minimum however many local
-// minima there are, which Newton's method from a few starting points does not promise.
+// numerator of C . C' up to the positive factor W^3. g has degree 3n - 1 (5
+// for conics); where every weight is 1 (lines, quadratics, cubics) W = 1 and
+// g = P . P' has degree 2n - 1 (1, 3 and 5). Every local minimum in (0, 1) is
+// a root of g, so the nearest point is at one of g's roots (to 2^-40, roots.h)
+// or an end point: all are evaluated and the closest wins. This finds the
+// global minimum however many local minima there are, which Newton's method
+// from a few starting points does not promise.
 #pragma once
 
 #include "casteljau/curve/path.h"

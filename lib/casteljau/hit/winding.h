@@ -9,11 +9,12 @@
 // the polygon version's half-open rule), so a vertex on the ray is counted
 // once by the two segments meeting there and a tangency not at all.
 //
-// Per segment: the roots of f in [0, 1] (by subdivision, roots.h) split it
-// into pieces on which f keeps one sign; the sign is read at each piece's
-// middle and at the end points, and each change is located by bisection on
-// the sign to 2^-52 before x is compared. Segments whose control polygon lies
-// wholly above, below or left of p are skipped (convex hull property).
+// Per segment: the roots of f in [0, 1] (roots.h) split it into pieces on
+// which f keeps one sign; the sign is read at each piece's middle and at the
+// end points, and each change is located on the sign (bracketed_root, to a
+// double's resolution) before x is compared. Segments whose control polygon
+// lies wholly above, below or left of p are skipped, and one wholly right of
+// p counts by its ends' signs alone (convex hull property).
 //
 // A fill closes every subpath (SVG 1.1, 11.3): an open subpath counts its
 // closing line too, as the rasterizer does.
