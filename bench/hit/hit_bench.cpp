@@ -1,10 +1,12 @@
 // Hit-testing costs per query, on the seeded random curves of tests/support:
-// nearest point on a cubic (roots of a degree-8 polynomial), point in the
-// fill of a closed 8-segment blob, and cubic-rectangle intersection. An
-// interactive application does a few per mouse move; these say how many fit
-// in a frame.
+// nearest point on a cubic (roots of a quintic), point in the fill of a
+// closed 8-segment blob, cubic-rectangle intersection, and the distance to a
+// 6 px stroke of the blob (its outline built at 1e-3 px, as Drawing::shape_at
+// asks). An interactive application does a few per mouse move; these say how
+// many fit in a frame.
 #include "casteljau/hit/nearest.h"
 #include "casteljau/hit/rect_hit.h"
+#include "casteljau/hit/stroke_hit.h"
 #include "casteljau/hit/winding.h"
 #include "corpus.h"
 
@@ -61,6 +63,18 @@ void BM_CubicIntersectsRect(benchmark::State& state) {
         [](const Segment& s, const Rect& r) { return segment_intersects_rect(s, r); });
 }
 BENCHMARK(BM_CubicIntersectsRect);
+
+void BM_StrokeDistanceBlob(benchmark::State& state) {
+    StrokeGeometry style;
+    style.width = 6;
+    over_inputs(
+        state, 4,
+        [](testing::Rng& rng) {
+            return std::pair{testing::random_blob(rng, 500, 8), rng.point(500)};
+        },
+        [&](const Path& p, Point q) { return stroke_distance(p, style, q); });
+}
+BENCHMARK(BM_StrokeDistanceBlob);
 
 } // namespace
 } // namespace casteljau
