@@ -1,5 +1,5 @@
 // Internal to the CSS style sheets (not installed): tokens, parsed
-// selectors and the rule index, shared by css.cpp (tokenizer and rules),
+// selectors and the rule index, shared by css_tokenizer.h, css.cpp (rules),
 // css_selector.cpp (selector parsing) and css_match.cpp (matching).
 #pragma once
 
