@@ -65,19 +65,15 @@ Rect Reader::fill_box(const pugi::xml_node& n, std::string_view name,
                       const StyleState& parent_style, const StyleState& style, bool stroke,
                       int depth) {
     Rect box;
-    const bool quiet = quiet_; // its problems are told where it is drawn
+    const ScopedValue quiet(quiet_, true); // its problems are told where it is drawn
     if (is_shape(name)) {
-        quiet_ = true;
         box = geometry(n, name, context(style)).bounds();
-        quiet_ = quiet;
     } else if (const auto kept = fill_boxes_.find(n.internal_object()); kept != fill_boxes_.end()) {
         box = kept->second;
     } else {
         Group drawn{1, {}};
-        const pugi::xml_node measuring = measuring_;
-        quiet_ = true, measuring_ = n;
+        const ScopedValue measuring(measuring_, n);
         element(n, parent_style, Affine::identity(), drawn, depth);
-        quiet_ = quiet, measuring_ = measuring;
         box = fill_boxes_[n.internal_object()] = user_bbox(drawn, Affine::identity());
     }
     if (stroke && style.stroke.kind != PaintSpec::Kind::None && !box.is_empty())

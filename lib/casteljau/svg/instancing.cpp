@@ -183,8 +183,7 @@ StyleState Reader::style_of(const pugi::xml_node& n, ElementProps& props) {
     for (pugi::xml_node a = n; a && a.type() == pugi::node_element; a = a.parent())
         chain.push_back(a);
     StyleState s;
-    const bool quiet = quiet_; // fill_box's walk is quiet throughout
-    quiet_ = true;
+    const ScopedValue quiet(quiet_, true); // the ancestors' problems were told
     for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
         StyleState next = s;
         props = {};
@@ -193,7 +192,6 @@ StyleState Reader::style_of(const pugi::xml_node& n, ElementProps& props) {
         keep_own_values(next, props, it->name());
         s = std::move(next);
     }
-    quiet_ = quiet;
     return s;
 }
 

@@ -158,10 +158,10 @@ Scene Reader::read() {
 // document's is unusable (the read fails on it later anyway).
 MediaContext Reader::media_context(const pugi::xml_node& root) {
     MediaContext m{options_.dark};
-    const bool was_quiet = quiet_;
-    quiet_ = true;
-    const auto [w, h] = document_size(root, view_box(root), LengthContext{16, 16, 0, 0});
-    quiet_ = was_quiet;
+    const auto [w, h] = [&] {
+        const ScopedValue quiet(quiet_, true); // told when the document's size is read
+        return document_size(root, view_box(root), LengthContext{16, 16, 0, 0});
+    }();
     if (!(w > 0) || !(h > 0) || w > options_.max_size || h > options_.max_size) return m;
     const OutputSize size = output_size(w, h, options_.media_size);
     if (!size.error.empty()) return m;

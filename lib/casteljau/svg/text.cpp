@@ -256,11 +256,11 @@ bool Reader::text_path(const pugi::xml_node& e, TextReading& r) {
         r.content.spans.pop_back();
         return false;
     }
-    const bool saved = quiet_;
-    quiet_ = true; // the shape's own problems are told where it is drawn
-    ref.path = geometry(target, kind, context(span.style));
-    ref.path_length = path_length(target);
-    quiet_ = saved;
+    {
+        const ScopedValue quiet(quiet_, true); // the shape's problems are told where it is drawn
+        ref.path = geometry(target, kind, context(span.style));
+        ref.path_length = path_length(target);
+    }
     if (const pugi::xml_attribute t = target.attribute("transform")) {
         const TransformResult tr = parse_transform_list(t.value());
         if (tr.error.empty()) ref.path.transform(tr.transform);

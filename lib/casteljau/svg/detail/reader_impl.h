@@ -26,6 +26,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace casteljau::svg_detail {
@@ -64,6 +65,22 @@ inline bool is_shape(std::string_view n) {
     return n == "path" || n == "rect" || n == "circle" || n == "ellipse" || n == "line" ||
            n == "polyline" || n == "polygon";
 }
+
+// Gives `slot` a value for a scope and puts the old one back after: the
+// reader's quiet walks (re-reading an element whose problems are told where
+// it is drawn), nested and left early alike.
+template <class T>
+class ScopedValue {
+  public:
+    ScopedValue(T& slot, T value) : slot_(slot), saved_(std::exchange(slot, std::move(value))) {}
+    ~ScopedValue() { slot_ = std::move(saved_); }
+    ScopedValue(const ScopedValue&) = delete;
+    ScopedValue& operator=(const ScopedValue&) = delete;
+
+  private:
+    T& slot_;
+    T saved_;
+};
 
 struct TextReading;
 struct TextContent;
