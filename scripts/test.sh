@@ -25,20 +25,39 @@ cmake --build build -j "$jobs"
 # of the one binary rather than one process per test: each process start
 # loads OpenImageIO's 260 shared libraries (some 0.2 s), which for 480
 # tests cost more than the tests (release: 50 s of the 130 s of ctest).
+# Twice as many shards as cores: gtest deals the tests out in turn, not by
+# their cost, and the few slow property tests made one of two shards run
+# 30 s longer than the other under the sanitizers; the scheduler evens out
+# four.
 unit_test_shards() {
-  local dir=$1 pids=() shard
-  for ((shard = 0; shard < jobs; shard++)); do
+  local dir=$1 pids=() shard shards=$((2 * jobs))
+  for ((shard = 0; shard < shards; shard++)); do
     # timeout: a hang guard (a shard takes a minute under the sanitizers).
-    GTEST_TOTAL_SHARDS=$jobs GTEST_SHARD_INDEX=$shard GTEST_BRIEF=1 \
+    GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$shard GTEST_BRIEF=1 \
       timeout 1200 "$dir/tests/casteljau_tests" > "$dir/unit_tests.$shard.log" 2>&1 &
     pids+=($!)
   done
-  for ((shard = 0; shard < jobs; shard++)); do
+  for ((shard = 0; shard < shards; shard++)); do
     if ! wait "${pids[$shard]}"; then
       cat "$dir/unit_tests.$shard.log"; echo "unit tests in $dir: shard $shard failed"; exit 1
     fi
   done
   grep -h "PASSED" "$dir"/unit_tests.*.log || true
+}
+
+# The named tests of build dir $1 through ctest (ctest's arguments follow),
+# with the unit test shards beside them: ctest's longest tests (the bad-input
+# and agreement scripts, a process each) leave a core idle for most of their
+# run, which the shards fill.
+named_and_unit_tests() {
+  local dir=$1 status=0 units
+  shift
+  unit_test_shards "$dir" > "$dir/unit_shards.log" 2>&1 &
+  units=$!
+  ctest --test-dir "$dir" -j "$jobs" --output-on-failure "$@" || status=$?
+  if ! wait "$units"; then status=1; fi
+  cat "$dir/unit_shards.log"
+  [[ $status -eq 0 ]] || { echo "tests in $dir failed"; exit 1; }
 }
 
 # The paint tests of build dir $1 once more with the baseline (SSE2) forms
@@ -50,9 +69,8 @@ baseline_forms() {
 }
 
 # The named tests through ctest (CLI, agreement, bad input, Python, fuzz
-# replays, install), then the unit tests.
-ctest --test-dir build -j "$jobs" --output-on-failure -E '^[A-Z]'
-unit_test_shards build
+# replays, install), and the unit tests.
+named_and_unit_tests build -E '^[A-Z]'
 baseline_forms build
 
 # Sanitizers: the same tests, minus the install test (its consumer project is
@@ -71,13 +89,12 @@ CC=clang CXX=clang++ cmake -S . -B build-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWit
 cmake --build build-asan -j "$jobs"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1
 export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp
-# The named tests through ctest, then the unit tests in shards (400
+# The named tests through ctest, and the unit tests in shards (400
 # sanitizer start-ups cost more than the tests: 153 s of ctest against 80).
 # Not the rsvg agreement (40 s here, for pictures the unit shards render
 # under the sanitizers too: EffectFormats draws every effects file, and
 # the svg_render fuzz target the examples' kinds of content).
-ctest --test-dir build-asan -j "$jobs" --output-on-failure -E '^install\.|^[A-Z]|^svg\.rsvg_agreement$'
-unit_test_shards build-asan
+named_and_unit_tests build-asan -E '^install\.|^[A-Z]|^svg\.rsvg_agreement$'
 baseline_forms build-asan
 unset ASAN_OPTIONS UBSAN_OPTIONS LSAN_OPTIONS
 
