@@ -72,7 +72,54 @@ bool isolates_one_root(const Piece& p, std::size_t n) {
     return changes == 1;
 }
 
+// de Casteljau on the first n values of b, in place.
+template <std::size_t N>
+double casteljau(std::array<double, N>& b, std::size_t n, double t) noexcept {
+    for (std::size_t r = n - 1; r > 0; --r)
+        for (std::size_t i = 0; i < r; ++i) b[i] = (1.0 - t) * b[i] + t * b[i + 1];
+    return b[0];
+}
+
+// The same on N values in registers: with N a constant the loops unroll and
+// nothing is stored. (The loop over a buffer of any length vectorizes into
+// loads of pairs that straddle the pairs its last level stored, a
+// store-forwarding stall each: a third of a point-in-fill test's samples.)
+template <std::size_t N>
+double bernstein_value_of(const double* c, double t) noexcept {
+    std::array<double, N> b;
+    std::copy_n(c, N, b.begin());
+    return casteljau(b, N, t);
+}
+
 } // namespace
+
+double bernstein_value(std::span<const double> c, double t) noexcept {
+    switch (c.size()) { // the degrees hit testing meets: up to 8 (nearest.h)
+    case 1:
+        return c[0];
+    case 2:
+        return bernstein_value_of<2>(c.data(), t);
+    case 3:
+        return bernstein_value_of<3>(c.data(), t);
+    case 4:
+        return bernstein_value_of<4>(c.data(), t);
+    case 5:
+        return bernstein_value_of<5>(c.data(), t);
+    case 6:
+        return bernstein_value_of<6>(c.data(), t);
+    case 7:
+        return bernstein_value_of<7>(c.data(), t);
+    case 8:
+        return bernstein_value_of<8>(c.data(), t);
+    case 9:
+        return bernstein_value_of<9>(c.data(), t);
+    default: {
+        std::array<double, kMaxPoints> b;
+        std::copy(c.begin(), c.end(), b.begin());
+        return casteljau(b, c.size(), t);
+    }
+    }
+}
 
 int bernstein_roots(std::span<const double> coeff, std::span<double> out) noexcept {
     const std::size_t n = coeff.size();
@@ -104,11 +151,13 @@ int bernstein_roots(std::span<const double> coeff, std::span<double> out) noexce
         if (isolates_one_root(p, n)) {
             // To 2^-kRootDepth in t, as the subdivision's depth cap resolves.
             const double width = std::ldexp(1.0, -kRootDepth) / (p.t1 - p.t0);
+            std::array<double, kMaxPoints> values;
+            for (std::size_t i = 0; i < n; ++i) values[i] = p.c[i].v;
             const double u = bracketed_root(
                 [&](double x) {
-                    return decasteljau_eval(std::span<const Scalar>(p.c.data(), n), x).v;
+                    return bernstein_value({values.data(), n}, x);
                 },
-                0.0, 1.0, p.c[0].v, p.c[n - 1].v, width);
+                0.0, 1.0, values[0], values[n - 1], width);
             out[count++] = last = p.t0 + (p.t1 - p.t0) * u;
             continue;
         }

@@ -74,6 +74,10 @@ double bracketed_root(F&& f, double a, double b, double fa, double fb, double wi
     return 0.5 * (a + b);
 }
 
+/// sum_i c[i] B_i^n(t), by de Casteljau's algorithm (lerps (1 - t) a + t b).
+/// Precondition: 1 <= c.size() <= kMaxPoints (see decasteljau.h).
+double bernstein_value(std::span<const double> c, double t) noexcept;
+
 /// Roots of sum_i coeff[i] B_i^n(t) in [0, 1], ascending, at most out.size()
 /// (a degree-n polynomial has at most n); returns how many were written.
 /// Precondition: coeff.size() <= kMaxPoints (see decasteljau.h).

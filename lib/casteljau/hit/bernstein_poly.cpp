@@ -7,12 +7,7 @@
 
 namespace casteljau {
 
-double BernsteinPoly::eval(double t) const {
-    std::array<double, kMaxDegree + 1> b = c;
-    for (int r = degree; r > 0; --r)
-        for (int i = 0; i < r; ++i) b[i] = b[i] + t * (b[i + 1] - b[i]);
-    return b[0];
-}
+double BernsteinPoly::eval(double t) const { return bernstein_value(coefficients(), t); }
 
 BernsteinPoly operator*(const BernsteinPoly& a, const BernsteinPoly& b) {
     BernsteinPoly r;
