@@ -38,6 +38,11 @@ double finite(double v, const char* what) {
     return v;
 }
 
+py::object rect_tuple(const Rect& r) {
+    if (r.is_empty()) return py::none();
+    return py::make_tuple(r.x0, r.y0, r.x1, r.y1);
+}
+
 FillRule to_rule(const std::string& s) {
     if (s == "nonzero") return FillRule::NonZero;
     if (s == "evenodd") return FillRule::EvenOdd;

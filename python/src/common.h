@@ -5,6 +5,7 @@
 
 #include "casteljau/flatten/flatten.h"
 #include "casteljau/geom/affine.h"
+#include "casteljau/geom/rect.h"
 #include "casteljau/paint/color.h"
 #include "casteljau/raster/sweep.h"
 
@@ -35,6 +36,9 @@ void bind_patch(py::module_& m);
 
 /// A finite coordinate, or ValueError naming `what`.
 double finite(double v, const char* what);
+
+/// (x0, y0, x1, y1), or None for an empty rectangle.
+py::object rect_tuple(const Rect& r);
 
 /// "nonzero" or "evenodd"; ValueError otherwise.
 FillRule to_rule(const std::string& s);

@@ -208,11 +208,6 @@ bool same_path(const Path& a, const Path& b) {
     return true;
 }
 
-py::object rect_tuple(const Rect& r) {
-    if (r.is_empty()) return py::none();
-    return py::make_tuple(r.x0, r.y0, r.x1, r.y1);
-}
-
 Path parse_d(const std::string& d, bool strict) {
     PathDataResult r = parse_path_data(d);
     if (r.error && strict)

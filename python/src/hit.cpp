@@ -1,11 +1,13 @@
 // Hit tests on a Path, exact on its curves (lib/casteljau/hit, not on a
 // flattening): point in fill and winding number, nearest point, rectangle
-// against fill or outline. contains() and winding() take a point (x, y) or an
+// against fill or outline; and on its stroke, to a tolerance: distance and
+// bounds. contains() and winding() take a point (x, y) or an
 // (N, 2) array of points, answered by a value or an array of N; an array is
 // answered on a copy of the path with the GIL released, so that another
 // thread may go on (and even edit the path) meanwhile.
 #include "casteljau/hit/nearest.h"
 #include "casteljau/hit/rect_hit.h"
+#include "casteljau/hit/stroke_hit.h"
 #include "casteljau/hit/winding.h"
 #include "common.h"
 
@@ -40,6 +42,15 @@ py::object per_point(const Path& path, py::handle points, F&& f) {
         for (py::ssize_t i = 0; i < n; ++i) o(i) = T(f(copy, Point{r(i, 0), r(i, 1)}));
     }
     return out;
+}
+
+// The stroke hit tests' tolerance: finite and at least 1e-6 (the stroker
+// bounds its work for any, but finer answers are rounding noise on a
+// drawing's coordinates).
+double stroke_tolerance(double tolerance) {
+    if (!(tolerance >= 1e-6) || !std::isfinite(tolerance))
+        value_error("tolerance must be finite and >= 1e-6");
+    return tolerance;
 }
 
 } // namespace
@@ -92,7 +103,28 @@ void bind_hit(py::module_& m) {
             },
             "x0"_a, "y0"_a, "x1"_a, "y1"_a, py::kw_only(), "fill"_a = true, "rule"_a = "nonzero",
             "Whether the rectangle meets the path's fill under `rule` (fill=True: a rectangle "
-            "wholly inside counts), or its curves (fill=False), exactly.");
+            "wholly inside counts), or its curves (fill=False), exactly.")
+        .def(
+            "stroke_distance",
+            [](const Path& p, double x, double y, const StrokeGeometry& geometry,
+               double tolerance) {
+                const Point q{finite(x, "x"), finite(y, "y")};
+                const double tol = stroke_tolerance(tolerance);
+                const Path copy = p; // the outline takes a while: other threads go on
+                py::gil_scoped_release release;
+                return stroke_distance(copy, geometry, q, tol);
+            },
+            "x"_a, "y"_a, "geometry"_a, "tolerance"_a = 1e-3,
+            "Distance from (x, y) to the path's stroke as drawn with `geometry` (a "
+            "StrokeGeometry: width, caps, joins, dashes), 0 inside it, within `tolerance`.")
+        .def(
+            "stroke_bounds",
+            [](const Path& p, const StrokeGeometry& geometry, double tolerance) {
+                return rect_tuple(stroke_bounds(p, geometry, stroke_tolerance(tolerance)));
+            },
+            "geometry"_a, "tolerance"_a = 1e-3,
+            "A box (x0, y0, x1, y1) holding the stroke drawn with `geometry`, at most "
+            "`tolerance` larger than its tight bounds; None when nothing is drawn.");
 }
 
 } // namespace casteljau::python

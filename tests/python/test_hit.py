@@ -1,11 +1,12 @@
-"""Path hit tests (contains, winding, nearest, intersects_rect) against
-closed forms and dense sampling, and their errors."""
+"""Path hit tests (contains, winding, nearest, intersects_rect,
+stroke_distance, stroke_bounds) against closed forms and dense sampling, and
+their errors."""
 import math
 
 import numpy as np
 import pytest
 
-from casteljau import Path
+from casteljau import Path, StrokeGeometry
 
 
 def circle(cx, cy, r, clockwise=False):
@@ -88,6 +89,24 @@ def test_intersects_rect_fill_and_outline():
     assert p.intersects_rect(10, 10, -10, -10)  # corners in any order
 
 
+def test_stroke_distance_and_bounds_follow_caps_and_dashes():
+    line = Path().move_to(0, 0).line_to(100, 0)
+    butt = StrokeGeometry(width=10)
+    assert line.stroke_distance(50, 3, butt) == 0
+    assert line.stroke_distance(50, 20, butt) == pytest.approx(15, abs=1e-3)
+    assert line.stroke_distance(-3, 0, butt) == pytest.approx(3, abs=1e-3)  # no reach past the end
+    round_cap = StrokeGeometry(width=10, cap="round")
+    assert line.stroke_distance(-8, 0, round_cap) == pytest.approx(3, abs=1e-3)
+    assert line.stroke_distance(-3, 0, round_cap) == 0
+    dashed = StrokeGeometry(width=10, dashes=[20, 10])
+    assert line.stroke_distance(25, 0, dashed) == pytest.approx(5, abs=1e-3)  # a gap's middle
+    x0, y0, x1, y1 = line.stroke_bounds(butt, tolerance=0.01)
+    assert (x0, y0) == pytest.approx((0, -5), abs=0.0101)
+    assert (x1, y1) == pytest.approx((100, 5), abs=0.0101)
+    assert x0 <= 0 and y0 <= -5 and x1 >= 100 and y1 >= 5  # holds the stroke
+    assert Path().stroke_bounds(butt) is None
+
+
 def test_errors():
     p = circle(0, 0, 1)
     with pytest.raises(ValueError, match="not finite"):
@@ -102,3 +121,7 @@ def test_errors():
         p.nearest(0, math.inf)
     with pytest.raises(ValueError, match="not finite"):
         p.intersects_rect(0, 0, math.nan, 1)
+    with pytest.raises(ValueError, match="tolerance"):
+        p.stroke_distance(0, 0, StrokeGeometry(), tolerance=0)
+    with pytest.raises(ValueError, match="tolerance"):
+        p.stroke_bounds(StrokeGeometry(), tolerance=math.inf)
