@@ -110,9 +110,12 @@ void bind_hit(py::module_& m) {
                double tolerance) {
                 const Point q{finite(x, "x"), finite(y, "y")};
                 const double tol = stroke_tolerance(tolerance);
-                const Path copy = p; // the outline takes a while: other threads go on
+                // Copies: the outline takes a while, and other threads go on
+                // (and may change the path or the geometry) meanwhile.
+                const Path path = p;
+                const StrokeGeometry g = geometry;
                 py::gil_scoped_release release;
-                return stroke_distance(copy, geometry, q, tol);
+                return stroke_distance(path, g, q, tol);
             },
             "x"_a, "y"_a, "geometry"_a, "tolerance"_a = 1e-3,
             "Distance from (x, y) to the path's stroke as drawn with `geometry` (a "
@@ -120,7 +123,15 @@ void bind_hit(py::module_& m) {
         .def(
             "stroke_bounds",
             [](const Path& p, const StrokeGeometry& geometry, double tolerance) {
-                return rect_tuple(stroke_bounds(p, geometry, stroke_tolerance(tolerance)));
+                const double tol = stroke_tolerance(tolerance);
+                const Path path = p; // as in stroke_distance
+                const StrokeGeometry g = geometry;
+                Rect box;
+                {
+                    py::gil_scoped_release release;
+                    box = stroke_bounds(path, g, tol);
+                }
+                return rect_tuple(box);
             },
             "geometry"_a, "tolerance"_a = 1e-3,
             "A box (x0, y0, x1, y1) holding the stroke drawn with `geometry`, at most "

@@ -91,6 +91,20 @@ TEST(Roots, BracketedRootMatchesBisectionInFewerSteps) {
     EXPECT_LT(total_steps, 500 * 20) << "no faster than bisection on average";
 }
 
+// Regression: the sides were told by the halved end values, and a negative
+// denormal halved to -0, which reads as positive: the bracket was lost and
+// 0.7675 came back for a sign change at 0.7.
+TEST(Roots, BracketedRootKeepsItsSidesWhenAHalvedValueUnderflows) {
+    const auto f = [](double t) { return t < 0.7 ? -4.94e-324 : t - 0.7; };
+    EXPECT_NEAR(bracketed_root(f, 0.69, 1.0, f(0.69), f(1.0), 0.0), 0.7, 1e-15);
+    EXPECT_EQ(bernstein_value({}, 0.5), 0.0);
+    // Coefficients whose products underflow still isolate their root.
+    const std::vector<double> tiny = {-1e-170, 1e-170};
+    std::array<double, 1> found{};
+    ASSERT_EQ(bernstein_roots(tiny, found), 1);
+    EXPECT_NEAR(found[0], 0.5, 1e-12);
+}
+
 TEST(Roots, BernsteinRootsResolveClustersAndDoubleRoots) {
     // (t - 0.3)(t - 0.3 - 1e-7)(t - 0.7) and (t - 0.2)(t - 0.5)^2 in Bernstein
     // form (blossoms), where isolation needs deep splits or never comes.

@@ -240,6 +240,22 @@ TEST(DrawingHit, ShapeAtFindsTheTopmostFillOrStroke) {
     EXPECT_EQ(d.shape_at({105, 105}), below);
 }
 
+// Regression: a stroke drawn at scale 0, or so small that the scale's squares
+// underflow to 0, asked the stroker for an outline at an infinite tolerance
+// (0.01 px over a scale of 0), on which it never ended.
+TEST(DrawingHit, AStrokeDrawnAtScaleZeroIsNeverHit) {
+    Drawing d(100, 100);
+    Path curve;
+    curve.move_to({0, 0});
+    curve.cubic_to({10, 20}, {30, -20}, {40, 0});
+    StrokeGeometry g;
+    g.width = 4;
+    d.stroke(curve, Paint::solid({0, 0, 0, 1}), g, Affine::scale(0, 0));
+    d.stroke(curve, Paint::solid({0, 0, 0, 1}), g, Affine::scale(1e-170));
+    EXPECT_EQ(d.shape_at({0, 0}), std::nullopt);
+    EXPECT_TRUE(d.shapes_in({-1, -1, 1, 1}).empty());
+}
+
 TEST(DrawingHit, ShapesInSelectsWhatTheRubberBandTouches) {
     Drawing d(300, 300);
     Rng rng(31);

@@ -60,7 +60,9 @@ bool has_sign_change(const Piece& p, std::size_t n) {
 // are nonzero and of opposite signs, and its coefficients change sign once,
 // zeros skipped.
 bool isolates_one_root(const Piece& p, std::size_t n) {
-    if (!(p.c[0].v * p.c[n - 1].v < 0.0)) return false;
+    // Signs, not the product, which underflows to -0 for tiny coefficients.
+    const double first = p.c[0].v, end = p.c[n - 1].v;
+    if (first == 0.0 || end == 0.0 || (first < 0.0) == (end < 0.0)) return false;
     int changes = 0;
     double last = p.c[0].v;
     for (std::size_t i = 1; i < n; ++i) {
@@ -95,6 +97,8 @@ double bernstein_value_of(const double* c, double t) noexcept {
 
 double bernstein_value(std::span<const double> c, double t) noexcept {
     switch (c.size()) { // the degrees hit testing meets: up to 8 (nearest.h)
+    case 0:
+        return 0;
     case 1:
         return c[0];
     case 2:

@@ -25,8 +25,12 @@
 // BIT 11, 1971): the secant through the bracket's ends, whose end that stays
 // twice in a row has its value halved, so that both ends close in
 // (superlinearly, order about 1.44 at a simple root). A step that leaves the
-// bracket, and every third step when the last three did not halve it, bisects,
-// so it never takes more steps than bisection does, give or take a third.
+// bracket bisects, and so does every third step when the last three did not
+// halve it: the bracket at least halves every three steps, so the worst case
+// is three times bisection's (12.5 steps on average in the tests, against
+// bisection's 53 to 60). Sides are told by the sign of f(a) as given, never
+// by the halved values (a halved denormal becomes -0, which reads as
+// positive).
 #pragma once
 
 #include <cstddef>
@@ -49,8 +53,10 @@ template <class F>
 double bracketed_root(F&& f, double a, double b, double fa, double fb, double width) noexcept {
     int side = 0;          // which end moved last: -1 a, +1 b
     double halved = b - a; // the bracket three steps ago
-    // 256 steps: past any bisection of [0, 1] down to neighbouring doubles (a
-    // guard only, for values so tiny that halving them underflows).
+    const bool a_positive = fa >= 0;
+    // At most 256 steps, a guard: the bracket has then halved at least 85
+    // times, below any width the callers ask for but 0 (neighbouring doubles,
+    // which near 0 can take over a thousand halvings).
     for (int step = 1; step <= 256 && b - a > width; ++step) {
         double t = a - fa * ((b - a) / (fb - fa));
         if (step % 3 == 0) {
@@ -61,7 +67,7 @@ double bracketed_root(F&& f, double a, double b, double fa, double fb, double wi
         if (!(t > a && t < b)) break; // a and b are neighbours
         const double ft = f(t);
         if (ft == 0) return t;
-        if ((ft >= 0) == (fa >= 0)) {
+        if ((ft >= 0) == a_positive) {
             a = t, fa = ft;
             if (side < 0) fb *= 0.5;
             side = -1;
@@ -74,8 +80,8 @@ double bracketed_root(F&& f, double a, double b, double fa, double fb, double wi
     return 0.5 * (a + b);
 }
 
-/// sum_i c[i] B_i^n(t), by de Casteljau's algorithm (lerps (1 - t) a + t b).
-/// Precondition: 1 <= c.size() <= kMaxPoints (see decasteljau.h).
+/// sum_i c[i] B_i^n(t), by de Casteljau's algorithm (lerps (1 - t) a + t b);
+/// 0 for no coefficients. Precondition: c.size() <= kMaxPoints (decasteljau.h).
 double bernstein_value(std::span<const double> c, double t) noexcept;
 
 /// Roots of sum_i coeff[i] B_i^n(t) in [0, 1], ascending, at most out.size()

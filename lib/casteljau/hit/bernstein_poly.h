@@ -27,7 +27,8 @@ namespace casteljau {
 
 /// A polynomial of degree <= 8 given by its Bernstein coefficients on [0, 1].
 struct BernsteinPoly {
-    /// 8 = 3n - 1 for cubics, the largest degree the nearest-point equation needs.
+    /// 8 = 3n - 1: room for the rational nearest-point equation of a cubic
+    /// (nearest.h; conics need 5, polynomial segments 2n - 1).
     static constexpr int kMaxDegree = 8;
     int degree = 0;
     std::array<double, kMaxDegree + 1> c{};

@@ -141,10 +141,20 @@ namespace {
 // segments and time, for answers that differ only within 0.01 px of the reach.)
 constexpr double kStrokeHitTolerancePx = 0.01;
 
+// The outline's tolerance in the shape's own units, or nothing for a
+// transform that draws nothing (a scale of 0, or one whose squares underflow:
+// an infinite tolerance, on which the stroker would never end).
+std::optional<double> stroke_hit_tolerance(const Shape& s) {
+    const double tol = kStrokeHitTolerancePx / s.transform.max_scale();
+    if (!(tol > 0) || !std::isfinite(tol)) return std::nullopt;
+    return tol;
+}
+
 // Whether the stroke's outline meets the device rectangle `r`.
 bool stroke_intersects_rect(const Shape& s, const Rect& r) {
-    Path device = stroke_outline_path(s.path, s.stroke->geometry,
-                                      kStrokeHitTolerancePx / s.transform.max_scale());
+    const std::optional<double> tol = stroke_hit_tolerance(s);
+    if (!tol) return false;
+    Path device = stroke_outline_path(s.path, s.stroke->geometry, *tol);
     device.transform(s.transform);
     return fill_intersects_rect(device, r, FillRule::NonZero);
 }
@@ -162,10 +172,11 @@ std::optional<Drawing::ShapeId> Drawing::shape_at(Point p, double tolerance) con
         const Affine to_user = s.transform.inverse();
         const Point q = to_user * p;
         if (s.fill && fill_contains(s.path, q, s.fill->rule)) return i;
-        if (s.stroke && stroke_distance(s.path, s.stroke->geometry, q,
-                                        kStrokeHitTolerancePx / s.transform.max_scale()) <=
-                            tolerance * to_user.max_scale())
-            return i;
+        if (s.stroke)
+            if (const std::optional<double> tol = stroke_hit_tolerance(s);
+                tol && stroke_distance(s.path, s.stroke->geometry, q, *tol) <=
+                           tolerance * to_user.max_scale())
+                return i;
     }
     return std::nullopt;
 }
