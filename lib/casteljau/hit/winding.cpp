@@ -13,12 +13,6 @@ namespace {
 // The sign with sgn(0) = +1: a point on the ray's line counts as above it.
 bool above(double v) { return v >= 0.0; }
 
-// The parameter in [a, b] where f changes sign (above(f(a)) != above(f(b))),
-// to a double's resolution (bracketed_root counts 0 as above, as above() does).
-double sign_change(const BernsteinPoly& f, double a, double b) {
-    return bracketed_root([&](double t) { return f.eval(t); }, a, b, f.eval(a), f.eval(b), 0.0);
-}
-
 } // namespace
 
 int segment_crossings(const Segment& s, Point p) {
@@ -48,14 +42,18 @@ int segment_crossings(const Segment& s, Point p) {
     t[n++] = 0.5 * (prev + 1.0);
     t[n++] = 1.0;
     int winding = 0;
-    // Exact end values: f(0) and f(1) are the end coefficients.
-    bool was_above = above(coef.front());
+    // Exact end values: f(0) and f(1) are the end coefficients. A change of
+    // sign between two samples is located to a double's resolution from the
+    // samples' values (bracketed_root counts 0 as above, as above() does).
+    double before = coef.front();
     for (int i = 1; i < n; ++i) {
-        const bool now_above = i == n - 1 ? above(coef.back()) : above(f.eval(t[i]));
-        if (now_above == was_above) continue;
-        const double tc = sign_change(f, t[i - 1], t[i]);
-        if (h.x.eval(tc) / h.w.eval(tc) > 0.0) winding += now_above ? 1 : -1;
-        was_above = now_above;
+        const double now = i == n - 1 ? coef.back() : f.eval(t[i]);
+        if (above(now) != above(before)) {
+            const double tc = bracketed_root([&](double u) { return f.eval(u); }, t[i - 1], t[i],
+                                             before, now, 0.0);
+            if (h.x.eval(tc) / h.w.eval(tc) > 0.0) winding += above(now) ? 1 : -1;
+        }
+        before = now;
     }
     return winding;
 }
