@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <gtest/gtest.h>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -243,6 +244,24 @@ TEST(StrokeHit, DashGapsAndButtCapsAreOutside) {
     EXPECT_NEAR(stroke_distance(p, g, {15, 0}), 5, 1e-9); // middle of the first gap
     EXPECT_EQ(stroke_distance(p, g, {5, 4}), 0);
     EXPECT_NEAR(stroke_distance(p, g, {-3, 0}), 3, 1e-9); // butt cap: no reach past the end
+}
+
+// Regression: an infinite tolerance made the stroker's sample steps NaN, and
+// stroke_distance never returned. No outline is built: nothing is near.
+TEST(StrokeHit, ANonFiniteToleranceOrWidthHasNoOutline) {
+    StrokeGeometry g;
+    g.width = 6;
+    const Path p = parse("M 0 0 C 10 0 10 10 0 10");
+    const double inf = std::numeric_limits<double>::infinity();
+    for (const double tol : {inf, std::numeric_limits<double>::quiet_NaN(), 0.0}) {
+        EXPECT_EQ(stroke_distance(p, g, {5, 5}, tol), inf) << tol;
+        EXPECT_TRUE(stroke_bounds(p, g, tol).is_empty()) << tol;
+    }
+    EXPECT_TRUE(std::isfinite(stroke_distance(p, g, {5, 5}, 1e300))) << "a finite one draws";
+    g.width = inf;
+    EXPECT_EQ(stroke_distance(p, g, {5, 5}), inf);
+    g.width = 6;
+    EXPECT_EQ(stroke_distance(parse("M 5 5 L 5 5"), g, {5, 5}), inf) << "butt caps: nothing";
 }
 
 TEST(StrokeHit, BoundsAreTightWithinTolerance) {

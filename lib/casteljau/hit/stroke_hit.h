@@ -24,7 +24,9 @@ namespace casteljau {
 /// of winding.h and rect_hit.h.
 Path stroke_outline_path(const Path& path, const StrokeGeometry& style, double tolerance);
 
-/// Distance from `p` to the stroke of `path` (0 inside), within `tolerance`.
+/// Distance from `p` to the stroke of `path` (0 inside), within `tolerance`;
+/// infinite where the stroke has no outline (a width or a tolerance that is
+/// not finite and > 0, a zero-length open path with butt caps).
 double stroke_distance(const Path& path, const StrokeGeometry& style, Point p,
                        double tolerance = 1e-3);
 

@@ -484,7 +484,9 @@ std::span<const Polygon> Stroker::outline(const Path& path, const StrokeGeometry
     b.count = 0;
     b.growth.through = false;
     const double h = style.width / 2;
-    if (!(h > 0) || !(tolerance > 0)) return {};
+    // An infinite tolerance asks for no outline: the samplers' steps would
+    // be NaN and never reach the curve's end (a hang before).
+    if (!(h > 0) || !(tolerance > 0) || !std::isfinite(tolerance)) return {};
     // How far the outline reaches from the path: a miter up to the limit, a
     // square cap's corner at sqrt 2 half-widths. Miters are counted up to 1e6
     // half-widths, so that a limit of 1e308 cannot switch the culling off; a

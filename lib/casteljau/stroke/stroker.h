@@ -116,8 +116,8 @@ class Stroker {
     Stroker& operator=(Stroker&&) noexcept;
 
     /// The outline polygons of the stroke (in the path's own coordinates),
-    /// valid until the next call. `tolerance` (> 0) and `visible` are in the
-    /// same coordinates.
+    /// valid until the next call. `tolerance` and `visible` are in the same
+    /// coordinates; a tolerance that is not finite and > 0 gives no polygons.
     std::span<const Polygon> outline(const Path& path, const StrokeGeometry& style,
                                      double tolerance, const Rect& visible = Rect::everything());
 
