@@ -55,9 +55,10 @@ void add_svg_options(CLI::App* cmd, SvgOptions& o) {
            "The color scheme style sheets' @media (prefers-color-scheme) queries see: light "
            "(default) or dark")
         ->check(CLI::IsMember({"light", "dark"}));
-    cmd->add_option("--resources-dir", o.resources_dir,
-                    "A folder <image> files may also come from, besides the SVG's own folder and "
-                    "below (never the network)")
+    cmd->add_option(
+           "--resources-dir", o.resources_dir,
+           "A folder the files of <image> and <use> may also come from, besides the SVG's own "
+           "folder and below (never the network)")
         ->check(CLI::ExistingDirectory);
     // Fonts go to the database the reader uses when given none; it is made
     // (fontconfig's scan of the system's fonts) only when text needs it.

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 namespace casteljau::svg_detail {
 
@@ -15,20 +16,36 @@ namespace casteljau::svg_detail {
 // were the use's child, inheriting the use's style, moved by x, y; a
 // <symbol> or <svg> becomes a viewport of the use's width and height. A
 // reference to itself or to an element being instanced (a cycle) is a
-// problem, and nothing is drawn.
+// problem, and nothing is drawn. An element of another file: external_use.cpp.
 void Reader::use(const pugi::xml_node& n, const StyleState& parent_style, const StyleState& style,
                  const Affine& m, Group& out, int depth) {
     const char* href = href_of(n);
-    const pugi::xml_node target = href[0] == '#' ? by_id(href + 1) : pugi::xml_node();
-    if (!target) {
-        if (href[0]) problem(n, std::string("href '") + href + "' names no element; skipped");
-        return;
-    }
+    if (!href[0]) return;
+    if (href[0] != '#') return external_use(n, href, parent_style, style, m, out, depth);
+    local_use(n, by_id(href + 1), std::string("href '") + href + "'", parent_style, style, m, out,
+              depth);
+}
+
+// A use of `target`, an element of this document (null: none), its href
+// `quoted` for the problems.
+void Reader::local_use(const pugi::xml_node& n, const pugi::xml_node& target,
+                       const std::string& quoted, const StyleState& parent_style,
+                       const StyleState& style, const Affine& m, Group& out, int depth) {
+    if (!target) return problem(n, quoted + " names no element; skipped");
     for (pugi::xml_node a = n; a; a = a.parent())
-        if (a == target)
-            return problem(n, std::string("href '") + href + "' contains the use itself; skipped");
+        if (a == target) return problem(n, quoted + " contains the use itself; skipped");
     if (std::find(instancing_.begin(), instancing_.end(), target) != instancing_.end())
-        return problem(n, std::string("href '") + href + "' makes a cycle; skipped");
+        return problem(n, quoted + " makes a cycle; skipped");
+    draw_use(n, *this, target, parent_style, style, m, out, depth);
+}
+
+// What the use `n` gives the element it draws, `target` of document `doc`
+// (this one, or another file's): its translation, its paints for
+// context-fill and context-stroke, and for a symbol or svg its size; then
+// the target is drawn by its own document's reader.
+void Reader::draw_use(const pugi::xml_node& n, Reader& doc, const pugi::xml_node& target,
+                      const StyleState& parent_style, const StyleState& style, const Affine& m,
+                      Group& out, int depth) {
     const LengthContext ctx = context(style);
     const auto at = [&](const char* attr, double percent_of) {
         return length(n, attr, percent_of, ctx).value_or(0);
@@ -36,6 +53,18 @@ void Reader::use(const pugi::xml_node& n, const StyleState& parent_style, const 
     const Affine moved = m * Affine::translate({at("x", vw_), at("y", vh_)});
     const std::string_view kind = target.name();
     if (clip_mode_ && !is_shape(kind)) return; // a clip path's use must name a shape
+    // A symbol's or svg's size: the use's width and height win over its own;
+    // a negative one is an error, and nothing is drawn.
+    UseSize size;
+    if (kind == "symbol" || kind == "svg") {
+        for (auto [attr, full, side] :
+             {std::tuple{"width", vw_, &size.width}, std::tuple{"height", vh_, &size.height}}) {
+            if (const std::optional<double> v = length(n, attr, full, ctx)) {
+                *side = non_negative(n, attr, v);
+                if (!*side) return;
+            }
+        }
+    }
     // The use is the context element of what it draws (SVG 2, 13.3): a
     // gradient or pattern it is painted with lies in its user space and
     // takes its box, what it draws (fill_box; while that very walk measures
@@ -50,32 +79,40 @@ void Reader::use(const pugi::xml_node& n, const StyleState& parent_style, const 
         paints.fill = in_box(paint(n, style.fill, style, box, m), b);
         paints.stroke = in_box(paint(n, style.stroke, style, box, m), b);
     }
+    doc.instance(target, style, moved, std::move(paints), size, out, depth + 1);
+}
+
+// Draws `target` as a use's instance: `style` is the use's, `m` its
+// transform moved by its x, y.
+void Reader::instance(const pugi::xml_node& target, const StyleState& style, const Affine& m,
+                      ContextPaints paints, const UseSize& size, Group& out, int depth) {
     context_.push_back(std::move(paints));
     instancing_.push_back(target);
+    const std::string_view kind = target.name();
     if (kind == "symbol" || kind == "svg") {
         if (conditions_hold(target)) {
             StyleState inner = style;
             ElementProps props;
-            apply_declarations(target, style, inner, nullptr, ctx);
+            apply_declarations(target, style, inner, nullptr, context(style));
             apply_declarations(target, style, inner, &props, context(inner));
             if (!props.display_none) {
                 Group g{props.opacity, {}};
-                nested_viewport(target, n, inner, props, moved, g, depth + 1);
-                if (has_effects(props)) apply_effects(target, props, moved, g, depth + 1);
+                nested_viewport(target, &size, inner, props, m, g, depth);
+                if (has_effects(props)) apply_effects(target, props, m, g, depth);
                 add_group(out, std::move(g));
             }
         }
     } else {
-        element(target, style, moved, out, depth + 1);
+        element(target, style, m, out, depth);
     }
     context_.pop_back();
     instancing_.pop_back();
 }
 
 // A new viewport (SVG 1.1, 7.9): a nested <svg>, or a <symbol> or <svg>
-// instanced by a <use>. Its x, y, width and height come from `sizes` (the
-// element itself, or the use: x and y are the use's translation then, and
-// its width and height win over the element's), percentages of the
+// instanced by a <use>. Its x, y, width and height are its own (for an
+// instance, x and y are the use's translation, and the use's width and
+// height, `use`, win over the element's), percentages of the
 // enclosing viewport; width and height are 100% when absent; a negative
 // one is an error and a zero one disables rendering. Its viewBox,
 // preserveAspectRatio and, for a symbol, refX and refY (SVG 2) map its
@@ -83,19 +120,19 @@ void Reader::use(const pugi::xml_node& n, const StyleState& parent_style, const 
 // (or to its clip property's rectangle) unless its overflow is visible or
 // auto (SVG 1.1, 14.3.3; hidden is the UA style sheet's value for these
 // elements).
-void Reader::nested_viewport(const pugi::xml_node& n, const pugi::xml_node& sizes,
-                             const StyleState& style, const ElementProps& props, const Affine& m,
-                             Group& out, int depth) {
+void Reader::nested_viewport(const pugi::xml_node& n, const UseSize* use, const StyleState& style,
+                             const ElementProps& props, const Affine& m, Group& out, int depth) {
     const LengthContext ctx = context(style);
-    const auto side = [&](const char* attr, double full) -> std::optional<double> {
-        std::optional<double> v = length(sizes, attr, full, ctx);
-        if (!v && sizes != n) v = length(n, attr, full, ctx);
-        return non_negative(sizes, attr, v ? v : full);
+    const auto side = [&](const char* attr, const std::optional<double>& given,
+                          double full) -> std::optional<double> {
+        if (given) return given; // the use's, checked
+        return non_negative(n, attr, length(n, attr, full, ctx).value_or(full));
     };
-    const auto w = side("width", vw_), h = side("height", vh_);
+    const auto w = side("width", use ? use->width : std::nullopt, vw_),
+               h = side("height", use ? use->height : std::nullopt, vh_);
     if (!w || !h || *w == 0 || *h == 0) return;
     Affine inner = m;
-    if (sizes == n) {
+    if (!use) {
         inner = inner * Affine::translate({length(n, "x", vw_, ctx).value_or(0),
                                            length(n, "y", vh_, ctx).value_or(0)});
     }

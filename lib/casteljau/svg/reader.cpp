@@ -94,30 +94,36 @@ std::optional<double> Reader::length(const pugi::xml_node& n, const char* attr, 
     return value;
 }
 
-Scene Reader::read() {
+// Parses the text and reads its style sheets: what drawing any of its
+// elements needs (read(), and a document a <use> draws from, external_use.cpp).
+pugi::xml_node Reader::load() {
     EntityExpansion entities = expand_entities(text_, options_.max_entity_bytes);
     if (!entities.error.empty()) fail_at(std::ptrdiff_t(entities.offset), entities.error);
     if (entities.changed) {
         expanded_ = std::move(entities.text);
         set_text(expanded_);
     }
-    pugi::xml_document doc;
     const pugi::xml_parse_result res =
         // parse_ws_pcdata: the spaces between a text's tspans are its text.
-        doc.load_buffer(text_.data(), text_.size(),
-                        pugi::parse_default | pugi::parse_doctype | pugi::parse_ws_pcdata);
+        doc_.load_buffer(text_.data(), text_.size(),
+                         pugi::parse_default | pugi::parse_doctype | pugi::parse_ws_pcdata);
     if (!res) fail_at(res.offset, std::string("malformed XML: ") + res.description());
     if (!entities.doctype) // a DOCTYPE the expansion could not read (UTF-16)
-        for (const pugi::xml_node& n : doc.children())
+        for (const pugi::xml_node& n : doc_.children())
             if (n.type() == pugi::node_doctype && std::strstr(n.value(), "<!ENTITY"))
                 fail_at(n.offset_debug(), "<!DOCTYPE>: entity declarations are read in "
                                           "UTF-8 and ASCII-compatible documents only");
-    if (declares_own_prefixes(text_)) normalize_namespaces(doc); // svg:svg, ns0:rect
-    const pugi::xml_node root = root_ = doc.document_element();
+    if (declares_own_prefixes(text_)) normalize_namespaces(doc_); // svg:svg, ns0:rect
+    const pugi::xml_node root = root_ = doc_.document_element();
     if (std::strcmp(root.name(), "svg") != 0)
         fail_at(root.offset_debug(),
                 std::string("the root element is <") + root.name() + ">, not <svg>");
     read_style_sheets(root);
+    return root;
+}
+
+Scene Reader::read() {
+    const pugi::xml_node root = load();
     Scene scene;
     StyleState style;
     // The root's font-size first: it is what rem means, and its own
@@ -196,6 +202,20 @@ std::pair<double, double> Reader::document_size(const pugi::xml_node& root,
             ratio && w.absolute ? w.length * box->h / box->w : h.length};
 }
 
+// The document's gradients, their percentages of the viewport vw_ x vh_.
+void Reader::index_gradients(const pugi::xml_node& root) {
+    // A stop's stop-color and stop-opacity come from the cascade; its
+    // currentColor is its computed color (style_of, quiet).
+    gradients_.emplace(root, vw_, vh_,
+                       GradientStyle{[this](const pugi::xml_node& n, const char* property) {
+                                         return declarations(n, property);
+                                     },
+                                     [this](const pugi::xml_node& n) {
+                                         ElementProps props;
+                                         return style_of(n, props).color;
+                                     }});
+}
+
 std::optional<Affine> Reader::viewport(const pugi::xml_node& root, Scene& scene,
                                        const LengthContext& ctx) {
     const std::optional<ViewBox> box = view_box(root);
@@ -210,16 +230,7 @@ std::optional<Affine> Reader::viewport(const pugi::xml_node& root, Scene& scene,
     }
     vw_ = box ? box->w : scene.width;
     vh_ = box ? box->h : scene.height;
-    // A stop's stop-color and stop-opacity come from the cascade; its
-    // currentColor is its computed color (style_of, quiet).
-    gradients_.emplace(root, vw_, vh_,
-                       GradientStyle{[this](const pugi::xml_node& n, const char* property) {
-                                         return declarations(n, property);
-                                     },
-                                     [this](const pugi::xml_node& n) {
-                                         ElementProps props;
-                                         return style_of(n, props).color;
-                                     }});
+    index_gradients(root);
     if (box && (box->w == 0 || box->h == 0)) {
         warn(root, "viewBox: a zero width or height disables rendering");
         return std::nullopt;
@@ -500,7 +511,7 @@ void Reader::element(const pugi::xml_node& n, const StyleState& parent_style, co
             }
         if (chosen || passed) element(chosen ? chosen : passed, style, m, g, depth + 1);
     } else if (name == "svg") {
-        nested_viewport(n, n, style, props, m, g, depth);
+        nested_viewport(n, nullptr, style, props, m, g, depth);
     } else if (name == "use") {
         use(n, parent_style, style, m, g, depth);
     } else if (name == "image") {

@@ -12,10 +12,12 @@
 // with a warning. With `strict`, the first problem is an error instead.
 //
 // Only a file that cannot be drawn at all is an error: not well-formed XML,
-// a root that is not <svg>, an unusable size, or a limit exceeded. No DTD is
-// processed, so no entity is ever expanded and no external reference is ever
-// followed; a DOCTYPE that declares entities (an expansion bomb, an external
-// entity) is an error, a plain one is ignored.
+// a root that is not <svg>, an unusable size, or a limit exceeded. A
+// DOCTYPE's internal entities are expanded within a limit (an expansion bomb
+// is an error), an external entity is never read (svg/xml_entities.h). The
+// only other files read are those an <image> or a <use> names, from the SVG's
+// folder or SvgOptions::resources_dir, never from the network
+// (svg/resource_url.h).
 //
 // Limits (SvgOptions): file size, element count, nesting depth, attribute
 // length and document size are checked before the work they bound.
@@ -65,7 +67,7 @@ struct SvgOptions {
     /// The first problem in the input is an error (no image), instead of a
     /// warning and the spec's recovery.
     bool strict = false;
-    /// Where the files an \<image\> names may come from, besides the SVG's
+    /// Where the files an \<image\> or \<use\> names may come from, besides the SVG's
     /// own folder and below (svg/resource_url.h); "" for none. Images are
     /// never fetched from the network.
     std::string resources_dir;
@@ -77,11 +79,14 @@ struct SvgOptions {
     /// more once drawn smaller than half its size: its levels,
     /// paint/image_levels.h); a larger image is not drawn, with a warning.
     std::size_t max_image_pixels = std::size_t(1) << 25;
-    /// SVG files drawn by \<image\> inside SVG files drawn by \<image\>, at most.
+    /// SVG files drawn by \<image\> inside SVG files drawn by \<image\>, at
+    /// most; and files a \<use\> draws from, inside such files
+    /// (svg/external_use.cpp), as deep.
     int max_image_nesting = 8;
-    /// Images read for a document, those of its SVG images included (a file
-    /// that draws itself under many names is read this often at most), and
-    /// the raster pixels they decode, together (1 GiB of float pixels).
+    /// Images and files a \<use\> draws from, read for a document, those of
+    /// its SVG images included (a file that draws itself under many names is
+    /// read this often at most), and the raster pixels they decode, together
+    /// (1 GiB of float pixels).
     std::size_t max_images = 1000;
     std::size_t max_image_pixels_total = std::size_t(1) << 26;
     /// The count against those, shared with the readers of the SVG images a

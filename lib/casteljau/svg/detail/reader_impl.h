@@ -145,6 +145,8 @@ class Reader {
                                  const LengthContext& ctx);
     // A path's d: the attribute, or the CSS d property (svg/d_property.cpp).
     Path path_data(const pugi::xml_node& n);
+    pugi::xml_node load();
+    void index_gradients(const pugi::xml_node& root);
     Scene read();
     MediaContext media_context(const pugi::xml_node& root);
     std::pair<double, double> document_size(const pugi::xml_node& root,
@@ -207,9 +209,26 @@ class Reader {
     Affine root_transform(const ElementProps& props, double width, double height) const;
     void use(const pugi::xml_node& n, const StyleState& parent_style, const StyleState& style,
              const Affine& m, Group& out, int depth);
-    void nested_viewport(const pugi::xml_node& n, const pugi::xml_node& sizes,
-                         const StyleState& style, const ElementProps& props, const Affine& m,
-                         Group& out, int depth);
+    void local_use(const pugi::xml_node& n, const pugi::xml_node& target, const std::string& quoted,
+                   const StyleState& parent_style, const StyleState& style, const Affine& m,
+                   Group& out, int depth);
+    // A use's width and height, where given: they win over its symbol's or svg's.
+    struct UseSize {
+        std::optional<double> width, height;
+    };
+    struct ContextPaints;
+    void draw_use(const pugi::xml_node& n, Reader& doc, const pugi::xml_node& target,
+                  const StyleState& parent_style, const StyleState& style, const Affine& m,
+                  Group& out, int depth);
+    void instance(const pugi::xml_node& target, const StyleState& style, const Affine& m,
+                  ContextPaints paints, const UseSize& size, Group& out, int depth);
+    // An element of another file (svg/external_use.cpp).
+    void external_use(const pugi::xml_node& n, std::string_view href,
+                      const StyleState& parent_style, const StyleState& style, const Affine& m,
+                      Group& out, int depth);
+    Reader* external_document(const pugi::xml_node& n, const std::string& path);
+    void nested_viewport(const pugi::xml_node& n, const UseSize* use, const StyleState& style,
+                         const ElementProps& props, const Affine& m, Group& out, int depth);
     // clip-path, mask, mix-blend-mode, isolation (svg/clip_mask.cpp).
     static bool has_effects(const ElementProps& p) {
         return !p.clip_path.empty() || p.clip_shape || !p.mask.empty() ||
@@ -370,6 +389,7 @@ class Reader {
     double root_font_size_ = 16;
     double vw_ = 0, vh_ = 0; // viewport size in user units, for percentages
     std::optional<svg_detail::GradientIndex> gradients_;
+    pugi::xml_document doc_; // load()'s
     pugi::xml_node root_;
     std::map<std::string, pugi::xml_node> ids_; // built at the first <use>
     std::vector<pugi::xml_node> instancing_;    // the <use> targets being drawn
@@ -394,6 +414,19 @@ class Reader {
         Affine space;
     };
     std::vector<ContextPaints> context_;
+    // The files a <use> draws from, by canonical path, each read once; their
+    // readers keep their text and tree.
+    struct ExternalDocument {
+        std::string text;               ///< the file's (inflated) text
+        std::unique_ptr<Reader> reader; ///< null when the file cannot be used
+        std::string error;              ///< why not
+    };
+    std::map<std::string, ExternalDocument> externals_;
+    // The other files' elements being instanced ("path#id"), in the document
+    // read and every file it draws from (one list, shared): a cycle through
+    // several files is found where it closes.
+    std::shared_ptr<std::vector<std::string>> external_chain_ =
+        std::make_shared<std::vector<std::string>>();
     int depth_ = 0;          // the nesting depth of the shape being painted, for its patterns
     bool clip_mode_ = false; // drawing a clipPath's content: opaque fills of shapes only
     bool quiet_ = false;     // style_of re-reads ancestors: their problems were told  //
