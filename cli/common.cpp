@@ -57,8 +57,8 @@ void add_svg_options(CLI::App* cmd, SvgOptions& o) {
         ->check(CLI::IsMember({"light", "dark"}));
     cmd->add_option(
            "--resources-dir", o.resources_dir,
-           "A folder the files of <image> and <use> may also come from, besides the SVG's own "
-           "folder and below (never the network)")
+           "A folder the files of <image>, <use> and style sheets may also come from, besides "
+           "the SVG's own folder and below (never the network)")
         ->check(CLI::ExistingDirectory);
     // Fonts go to the database the reader uses when given none; it is made
     // (fontconfig's scan of the system's fonts) only when text needs it.

@@ -157,17 +157,54 @@ TEST(CssParse, AtRulesAreSkippedWhole) {
                                       &problems);
     const Doc doc(kTree);
     EXPECT_EQ(cascade(sheet, doc, "r1"), "fill:green");
-    // Not @charset, nor @font-face, which is kept for the reader (svg/font_face.h).
-    ASSERT_EQ(problems.size(), 5u) << problems_text(problems);
+    // Not @charset, nor @import at the head (css_imports'), nor @font-face,
+    // which is kept for the reader (svg/font_face.h).
+    ASSERT_EQ(problems.size(), 4u) << problems_text(problems);
     for (std::size_t i = 0; i < problems.size(); ++i) {
         EXPECT_TRUE(problems[i].unsupported) << problems_text(problems);
-        EXPECT_EQ(problems[i].line, int(i) + (i < 2 ? 2 : 3)) << problems_text(problems);
+        EXPECT_EQ(problems[i].line, int(i) + (i < 1 ? 3 : 4)) << problems_text(problems);
     }
-    EXPECT_NE(problems[0].message.find("@import"), std::string::npos);
     ASSERT_EQ(sheet.font_faces().size(), 1u);
     EXPECT_EQ(sheet.font_faces()[0].line, 4);
     ASSERT_EQ(sheet.font_faces()[0].descriptors.size(), 2u);
     EXPECT_EQ(sheet.font_faces()[0].descriptors[1].value, "url(a.woff)");
+}
+
+TEST(CssParse, ImportsAreTheSheetsHeadAndAreListedNotRead) {
+    const char* css = R"(@charset "utf-8"; <!--
+@import url("a.css");
+@import 'b\2e css' screen and (min-width: 10px);
+@import url(c.css)print;
+@import 12;
+@import url("d.css") layer(base);
+rect { fill: red }
+@import "late.css";
+@media print { @import "nested.css"; }
+)";
+    std::vector<CssProblem> problems;
+    const std::vector<CssImport> imports = css_imports(css, problems);
+    ASSERT_EQ(imports.size(), 3u);
+    EXPECT_EQ(imports[0].url, "a.css");
+    EXPECT_EQ(imports[0].media, "");
+    EXPECT_EQ(imports[0].line, 2);
+    EXPECT_EQ(imports[1].url, "b.css");
+    EXPECT_EQ(imports[1].media, "screen and (min-width: 10px)");
+    EXPECT_EQ(imports[2].url, "c.css");
+    EXPECT_EQ(imports[2].media, "print");
+    ASSERT_EQ(problems.size(), 2u) << problems_text(problems);
+    EXPECT_EQ(problems[0].line, 5);
+    EXPECT_FALSE(problems[0].unsupported);
+    EXPECT_EQ(problems[1].line, 6);
+    EXPECT_TRUE(problems[1].unsupported);
+    // The parser skips the head's imports, and tells the one after a rule
+    // (CSS ignores it); the one inside @media print is skipped with its block.
+    problems.clear();
+    StyleSheet sheet;
+    sheet.parse(css, problems);
+    ASSERT_EQ(problems.size(), 1u) << problems_text(problems);
+    EXPECT_EQ(problems[0].line, 8);
+    EXPECT_NE(problems[0].message.find("@import after other rules"), std::string::npos);
+    EXPECT_EQ(sheet.size(), 1u);
 }
 
 TEST(CssParse, MediaRulesApplyAsAPictureAnswersThem) {

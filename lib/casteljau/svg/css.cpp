@@ -71,14 +71,24 @@ class Parser {
 
     // Rules to the end, or (`in_block`) to the '}' closing an @media block.
     // False when the selector limit is reached (the rest is then ignored).
+    // The sheet's leading @import rules are css_imports'; one after another
+    // rule is invalid (CSS Cascade 4, 2.1), and ignored.
     bool rules(css_detail::SheetData& data, bool in_block, int depth) {
+        bool leading = !in_block; // nothing but @charset and @import so far
         for (;;) {
             Token t = tokens_.next();
             if (t.type == Tok::Eof) return in_block ? !ended() : true;
             if (t.type == Tok::RBrace && in_block) return true;
             if (t.type == Tok::Whitespace || t.type == Tok::Cdo || t.type == Tok::Cdc) continue;
-            if (t.type == Tok::AtKeyword && svg_detail::iequals(t.value, "media") &&
-                depth < kMaxMediaDepth) {
+            const bool at = t.type == Tok::AtKeyword;
+            if (at && svg_detail::iequals(t.value, "import")) {
+                if (!leading)
+                    problem(t.line, "@import after other rules is ignored (CSS Cascade 4, 2.1)");
+                skip_at_rule(false);
+                continue;
+            }
+            leading = leading && at && svg_detail::iequals(t.value, "charset");
+            if (at && svg_detail::iequals(t.value, "media") && depth < kMaxMediaDepth) {
                 if (!media(t, data, depth)) return false;
             } else if (t.type == Tok::AtKeyword && svg_detail::iequals(t.value, "font-face")) {
                 font_face(t, data);
@@ -137,8 +147,6 @@ class Parser {
             return; // meaningless in decoded text
         if (nested)
             problem(t.line, cat(name, " inside a rule is not supported; skipped"), true);
-        else if (svg_detail::iequals(t.value, "import"))
-            problem(t.line, "@import is not supported (no style sheet is fetched); skipped", true);
         else
             problem(t.line, cat(name, " is not supported; skipped with its block"), true);
     }
@@ -416,6 +424,63 @@ std::vector<CssDeclaration> parse_css_declarations(std::string_view text,
         return out;
     }
     css_detail::Parser(text, problems).declarations(out, false, true);
+    return out;
+}
+
+// The head of a sheet: @charset, then @import rules, each
+//   '@import' ( string | url ) media-query-list? ';'
+// (CSS Cascade 4, 2.1; a layer() or supports() condition is not read).
+std::vector<CssImport> css_imports(std::string_view css, std::vector<CssProblem>& problems) {
+    using css_detail::Tok;
+    std::vector<CssImport> out;
+    if (css.size() >= std::numeric_limits<std::uint32_t>::max()) return out;
+    std::vector<CssProblem> tokens_problems; // StyleSheet::parse reports these
+    css_detail::Tokenizer tokens(css, tokens_problems);
+    const auto next = [&] {
+        css_detail::Token t = tokens.next();
+        while (t.type == Tok::Whitespace) t = tokens.next();
+        return t;
+    };
+    // To the ';' ending the rule; its offset, or the end's.
+    const auto rule_end = [&](css_detail::Token t) {
+        while (t.type != Tok::Semicolon && t.type != Tok::Eof && t.type != Tok::LBrace)
+            t = tokens.next();
+        return t.type == Tok::Semicolon ? t.begin : std::uint32_t(css.size());
+    };
+    for (css_detail::Token t = next(); t.type != Tok::Eof; t = next()) {
+        if (t.type == Tok::Cdo || t.type == Tok::Cdc) continue;
+        if (t.type != Tok::AtKeyword) break;
+        if (svg_detail::iequals(t.value, "charset")) {
+            rule_end(next());
+            continue;
+        }
+        if (!svg_detail::iequals(t.value, "import")) break;
+        CssImport imp{{}, {}, t.line};
+        css_detail::Token u = next();
+        bool ok = u.type == Tok::String || u.type == Tok::Url;
+        if (u.type == Tok::Function && svg_detail::iequals(u.value, "url")) {
+            imp.url = next().value; // url("...") is a function holding a string
+            u = next();
+            ok = u.type == Tok::RParen;
+        } else {
+            imp.url = u.value;
+        }
+        const std::uint32_t media_begin = u.end; // past the URL
+        const std::uint32_t end = rule_end(ok ? tokens.next() : std::move(u));
+        if (!ok) {
+            problems.push_back({imp.line, "@import without a URL; skipped"});
+            continue;
+        }
+        imp.media =
+            svg_detail::trim(css.substr(media_begin, std::max(end, media_begin) - media_begin));
+        if (imp.media.starts_with("layer") || imp.media.starts_with("supports(")) {
+            problems.push_back(
+                {imp.line, "@import with a layer or supports() condition is not supported; skipped",
+                 true});
+            continue;
+        }
+        out.push_back(std::move(imp));
+    }
     return out;
 }
 

@@ -14,9 +14,10 @@
 // with comments, strings, escapes and blocks as CSS Syntax 3, 4 tokenizes
 // them. @media rules are read as a picture answers their query
 // (svg/media_query.h): a matching one's block as though it stood alone, the
-// others skipped. Other at-rules (@import, @font-face, ...) are skipped
-// whole, their `{}` block balanced (5.4.2); the document's <style> text is
-// all that is read, so no file and no URL is ever fetched.
+// others skipped; @font-face rules are kept for the reader. The @import
+// rules at a sheet's head are listed by css_imports for the reader to read
+// (no file or URL is fetched here); other at-rules are skipped whole, their
+// `{}` block balanced (5.4.2).
 //
 // Errors are recovered from as CSS says: a rule whose selector list holds an
 // invalid selector is dropped whole (Selectors 4, 4.1: "an invalid selector
@@ -140,6 +141,20 @@ class CssTree {
     /// No element children and no text (:empty, Selectors 4, 14.2).
     virtual bool empty(Node element) const = 0;
 };
+
+/// An \@import rule at the head of a sheet (CSS Cascade 4, 2.1).
+struct CssImport {
+    std::string url;   ///< the sheet's URL as written, escapes resolved
+    std::string media; ///< the media query list it applies to; "" for all
+    int line = 0;      ///< 1-based line of the at-keyword within the sheet text
+};
+
+/// The \@import rules at the head of `css` (after any \@charset, before
+/// every other rule), in order: the sheets whose rules come before this
+/// one's. No file is read here (the SVG reader reads them, within its
+/// limits). A malformed one is a problem, and skipped; StyleSheet::parse
+/// skips these, and reports an \@import further down (CSS ignores it).
+std::vector<CssImport> css_imports(std::string_view css, std::vector<CssProblem>& problems);
 
 /// The rules of a document's style sheets, indexed for matching.
 class StyleSheet {

@@ -404,7 +404,9 @@ bool contains_media_rule(std::string_view css) {
 
 // Every <style> element's sheet (type text/css, empty or absent), in
 // document order, before any element is styled: a sheet applies to the
-// whole document. Its text is its character data, CDATA included.
+// whole document. Its text is its character data, CDATA included. The
+// sheets the prolog links (xml-stylesheet) come first, and each sheet's
+// @import rules before its own (linked_style_sheets.cpp).
 void Reader::read_style_sheets(const pugi::xml_node& root) {
     std::vector<pugi::xml_node> styles;
     struct Walker : pugi::xml_tree_walker {
@@ -417,6 +419,7 @@ void Reader::read_style_sheets(const pugi::xml_node& root) {
     } walker;
     walker.out = &styles;
     pugi::xml_node(root).traverse(walker);
+    linked_style_sheets(root);
     for (const pugi::xml_node& st : styles) {
         const std::string_view type = st.attribute("type").value();
         if (!type.empty() && type != "text/css") continue;
@@ -427,21 +430,43 @@ void Reader::read_style_sheets(const pugi::xml_node& root) {
             fail(st, "a style sheet of " + std::to_string(css.size()) +
                          " bytes, over the limit of " +
                          std::to_string(options_.max_attribute_bytes) + " bytes");
-        std::vector<CssProblem> problems;
         const std::size_t font_faces = sheet_.font_faces().size();
-        if (!media_ && contains_media_rule(css)) media_ = media_context(root);
-        sheet_.parse(css, problems, media_ ? *media_ : MediaContext{options_.dark});
-        for (const CssProblem& p : problems) {
-            // The problem's line within the sheet, from the <style> element's.
-            SvgDiagnostic d = located(st, "style sheet: " + p.message);
-            d.line += p.line - 1;
-            if (quiet_) continue;
-            if (options_.strict && !p.unsupported) throw Failure{d.text()};
-            warnings_.push_back(std::move(d));
-        }
+        parse_sheet(css, located(st, ""), options_.base_dir, 0);
         load_font_faces(st, font_faces);
     }
     if (!sheet_.empty()) matcher_ = std::make_unique<CssMatcher>(sheet_, css_tree_);
+}
+
+// One sheet's text into the document's: the sheets its @import rules name
+// first, then its own rules. `at` locates its first line; `dir` is where its
+// relative URLs start.
+void Reader::parse_sheet(std::string_view css, const SvgDiagnostic& at, const std::string& dir,
+                         int depth) {
+    std::vector<CssProblem> problems;
+    const std::vector<CssImport> imports = css_imports(css, problems);
+    sheet_problems(problems, at);
+    for (const CssImport& imp : imports) {
+        SvgDiagnostic where = at;
+        where.line += imp.line - 1;
+        import_sheet(where, imp.url, imp.media, dir, depth + 1);
+    }
+    problems.clear();
+    if (!media_ && contains_media_rule(css)) media_ = media_context(root_);
+    sheet_.parse(css, problems, media_ ? *media_ : MediaContext{options_.dark});
+    sheet_problems(problems, at);
+}
+
+// A sheet's problems, their lines within the sheet that starts at `at`'s.
+void Reader::sheet_problems(const std::vector<CssProblem>& problems, const SvgDiagnostic& at) {
+    for (const CssProblem& p : problems) {
+        SvgDiagnostic d = at;
+        d.line += p.line - 1;
+        d.message = "style sheet: " + p.message;
+        if (p.unsupported && !quiet_)
+            warnings_.push_back(std::move(d));
+        else
+            problem_at(std::move(d));
+    }
 }
 
 // Whether the element's conditional attributes let it be rendered.

@@ -15,9 +15,9 @@
 // a root that is not <svg>, an unusable size, or a limit exceeded. A
 // DOCTYPE's internal entities are expanded within a limit (an expansion bomb
 // is an error), an external entity is never read (svg/xml_entities.h). The
-// only other files read are those an <image> or a <use> names, from the SVG's
-// folder or SvgOptions::resources_dir, never from the network
-// (svg/resource_url.h).
+// only other files read are those an <image>, a <use>, an xml-stylesheet link
+// or an @import names, from the SVG's folder or SvgOptions::resources_dir,
+// never from the network (svg/resource_url.h).
 //
 // Limits (SvgOptions): file size, element count, nesting depth, attribute
 // length and document size are checked before the work they bound.
@@ -42,6 +42,12 @@ struct ImageBudget {
     std::size_t images = 0; ///< raster and SVG images read
     std::size_t pixels = 0; ///< raster pixels decoded
 };
+
+/// Style sheet files one document reads, its xml-stylesheet links and
+/// every \@import together (each read as often as it is imported).
+inline constexpr std::size_t kMaxStyleSheetFiles = 256;
+/// How deep \@import rules nest (a sheet importing a sheet importing ...).
+inline constexpr int kMaxStyleSheetNesting = 16;
 
 /// Limits and options of the SVG reader.
 struct SvgOptions {

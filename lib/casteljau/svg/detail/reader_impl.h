@@ -137,6 +137,13 @@ class Reader {
         if (options_.strict) fail(n, what);
         warn(n, what);
     }
+    // The same, located by `d` (in a file other than this one, or in a
+    // style sheet's text).
+    void problem_at(SvgDiagnostic d) {
+        if (quiet_) return;
+        if (options_.strict) throw Failure{d.text()};
+        warnings_.push_back(std::move(d));
+    }
     LengthContext context(const StyleState& s) const {
         return {s.font_size, root_font_size_, vw_, vh_};
     }
@@ -187,6 +194,13 @@ class Reader {
     }
     bool conditions_hold(const pugi::xml_node& n) const;
     void read_style_sheets(const pugi::xml_node& root);
+    void parse_sheet(std::string_view css, const SvgDiagnostic& at, const std::string& dir,
+                     int depth);
+    void sheet_problems(const std::vector<CssProblem>& problems, const SvgDiagnostic& at);
+    // Style sheets in files: xml-stylesheet, @import (svg/linked_style_sheets.cpp).
+    void linked_style_sheets(const pugi::xml_node& root);
+    void import_sheet(const SvgDiagnostic& where, const std::string& href, const std::string& media,
+                      const std::string& dir, int depth);
     const std::vector<const CssDeclaration*>& matched(const pugi::xml_node& n);
     // Adds a group's children to `out`, or the group itself when it needs a
     // layer (opacity, a clip, a mask, a blend mode, isolation).
@@ -422,6 +436,8 @@ class Reader {
         std::string error;              ///< why not
     };
     std::map<std::string, ExternalDocument> externals_;
+    std::vector<std::string> sheet_chain_; // the style sheet files being read, outermost first
+    std::size_t sheet_files_ = 0;          // read so far, against kMaxStyleSheetFiles
     // The other files' elements being instanced ("path#id"), in the document
     // read and every file it draws from (one list, shared): a cycle through
     // several files is found where it closes.
