@@ -3,6 +3,7 @@
 // markers (SVG 2, 13.7: a marker's content drawn at each vertex of a path,
 // line, polyline or polygon, as groups after the shape), and, before any of
 // it is built, the count of what instancing expands to.
+#include "casteljau/svg/detail/ascii.h"
 #include "casteljau/svg/detail/reader_impl.h"
 #include "casteljau/svg/viewport.h"
 
@@ -19,11 +20,11 @@ namespace casteljau::svg_detail {
 // problem, and nothing is drawn. An element of another file: external_use.cpp.
 void Reader::use(const pugi::xml_node& n, const StyleState& parent_style, const StyleState& style,
                  const Affine& m, Group& out, int depth) {
-    const char* href = href_of(n);
-    if (!href[0]) return;
+    const std::string_view href = trim(href_of(n));
+    if (href.empty()) return;
     if (href[0] != '#') return external_use(n, href, parent_style, style, m, out, depth);
-    local_use(n, by_id(href + 1), std::string("href '") + href + "'", parent_style, style, m, out,
-              depth);
+    local_use(n, by_id(std::string(href.substr(1))), "href '" + std::string(href) + "'",
+              parent_style, style, m, out, depth);
 }
 
 // A use of `target`, an element of this document (null: none), its href
@@ -40,12 +41,12 @@ void Reader::local_use(const pugi::xml_node& n, const pugi::xml_node& target,
 }
 
 // What the use `n` gives the element it draws, `target` of document `doc`
-// (this one, or another file's): its translation, its paints for
-// context-fill and context-stroke, and for a symbol or svg its size; then
-// the target is drawn by its own document's reader.
+// (this one, or another file's, `key` its "path#id"): its translation, its
+// paints for context-fill and context-stroke, and for a symbol or svg its
+// size; then the target is drawn by its own document's reader.
 void Reader::draw_use(const pugi::xml_node& n, Reader& doc, const pugi::xml_node& target,
                       const StyleState& parent_style, const StyleState& style, const Affine& m,
-                      Group& out, int depth) {
+                      Group& out, int depth, const std::string& key) {
     const LengthContext ctx = context(style);
     const auto at = [&](const char* attr, double percent_of) {
         return length(n, attr, percent_of, ctx).value_or(0);
@@ -79,7 +80,10 @@ void Reader::draw_use(const pugi::xml_node& n, Reader& doc, const pugi::xml_node
         paints.fill = in_box(paint(n, style.fill, style, box, m), b);
         paints.stroke = in_box(paint(n, style.stroke, style, box, m), b);
     }
-    doc.instance(target, style, moved, std::move(paints), size, out, depth + 1);
+    if (&doc == this)
+        instance(target, style, moved, std::move(paints), size, out, depth + 1);
+    else
+        external_instance(doc, key, target, style, moved, std::move(paints), size, out, depth + 1);
 }
 
 // Draws `target` as a use's instance: `style` is the use's, `m` its

@@ -7,9 +7,11 @@
 // them, in order, as browsers and librsvg apply them: the linked sheets
 // before every <style>.
 //
-// A file is found as an <image>'s is (svg/resource_url.h): the SVG's folder
-// and below, or SvgOptions::resources_dir, never the network; a sheet's own
-// @imports from its folder and below. A data: URL's sheet is read in place.
+// A file is found as an <image>'s is (svg/resource_url.h): relative to the
+// sheet or document that names it, within the SVG's folder or
+// SvgOptions::resources_dir, never the network. A data: URL's sheet is read
+// in place. A var() in any sheet turns on custom properties (the reader's
+// own test looks at the document's text only).
 // A sheet of another type, an alternate sheet (alternate="yes") and a sheet
 // whose media query does not match the picture (svg/media_query.h) are not
 // applied. Problems inside a sheet file name that file and its line.
@@ -17,20 +19,54 @@
 // its problems are located at the first <style>'s line: font_face.cpp.)
 //
 // Limits: kMaxStyleSheetFiles files a document (each @import of a file
-// reads it again), @imports kMaxStyleSheetNesting deep, each file at most
-// SvgOptions::max_attribute_bytes (what a <style>'s text may hold); a file
-// that imports itself, through any others, is a problem and is skipped.
+// reads it again), @imports kMaxStyleSheetNesting deep, and all their text
+// at most SvgOptions::max_attribute_bytes (what one <style> may hold); a
+// file that imports itself, through any others, is a problem and is
+// skipped. A UTF-16 document's xml-stylesheet links are not read (the
+// prolog is read as UTF-8 text).
 #include "casteljau/io/text_file.h"
 #include "casteljau/svg/detail/ascii.h"
 #include "casteljau/svg/detail/reader_impl.h"
 #include "casteljau/svg/media_query.h"
 #include "casteljau/svg/resource_url.h"
+#include "casteljau/text/utf8.h"
 
+#include <charconv>
 #include <filesystem>
 
 namespace casteljau::svg_detail {
 
 namespace {
+
+// A pseudo-attribute's value with its character references and the five
+// predefined entities replaced (Associating Style Sheets, 3); others kept.
+std::string decoded(std::string_view v) {
+    std::string out;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const std::size_t semi = v[i] == '&' ? v.find(';', i) : std::string_view::npos;
+        if (semi == std::string_view::npos) {
+            out += v[i];
+            continue;
+        }
+        const std::string_view name = v.substr(i + 1, semi - i - 1);
+        constexpr std::pair<std::string_view, char> kNamed[] = {
+            {"amp", '&'}, {"lt", '<'}, {"gt", '>'}, {"quot", '"'}, {"apos", '\''}};
+        bool done = false;
+        for (const auto& [entity, c] : kNamed)
+            if (name == entity) out += c, done = true;
+        if (!done && name.size() > 1 && name[0] == '#') {
+            const bool hex = name[1] == 'x';
+            std::uint32_t cp = 0;
+            const auto [end, ec] = std::from_chars(name.data() + (hex ? 2 : 1),
+                                                   name.data() + name.size(), cp, hex ? 16 : 10);
+            if (ec == std::errc() && end == name.data() + name.size() && cp > 0 && cp < 0x110000)
+                append_utf8(out, char32_t(cp)), done = true;
+        }
+        if (!done) out.append(v.substr(i, semi - i + 1));
+        i = semi;
+    }
+    return out;
+}
 
 // The pseudo-attributes of a processing instruction's text, name="value" or
 // name='value' (Associating Style Sheets, 3); reading ends at anything else.
@@ -49,7 +85,7 @@ std::map<std::string, std::string> pseudo_attributes(std::string_view s) {
         if (s.empty() || (s.front() != '"' && s.front() != '\'')) return out;
         const std::size_t close = s.find(s.front(), 1);
         if (close == std::string_view::npos) return out;
-        out.emplace(name, s.substr(1, close - 1));
+        out.emplace(name, decoded(s.substr(1, close - 1)));
         s.remove_prefix(close + 1);
     }
 }
@@ -97,21 +133,34 @@ void Reader::import_sheet(const SvgDiagnostic& where, const std::string& href,
     if (depth > kMaxStyleSheetNesting)
         return tell(quoted + ": imports nested deeper than " +
                     std::to_string(kMaxStyleSheetNesting) + " (the limit); skipped");
-    if (++sheet_files_ > kMaxStyleSheetFiles)
+    ImageBudget& budget = *options_.image_budget;
+    if (++budget.sheets > kMaxStyleSheetFiles)
         return tell(quoted + ": more than " + std::to_string(kMaxStyleSheetFiles) +
                     " style sheet files in the document (the limit); skipped");
+    // What is left of the bytes all sheet files may hold.
+    const std::size_t left =
+        options_.max_attribute_bytes - std::min(budget.sheet_bytes, options_.max_attribute_bytes);
+    const auto over = [&] {
+        tell(quoted + ": more than " + std::to_string(options_.max_attribute_bytes) +
+             " bytes of style sheet files in the document (the limit); skipped");
+    };
     std::string data_error;
     if (std::optional<DataUrl> data = parse_data_url(href, data_error)) {
+        if (data->bytes.size() > left) return over();
+        budget.sheet_bytes += data->bytes.size();
         const std::string css(data->bytes.begin(), data->bytes.end());
         return parse_sheet(css, {where.file, where.line, where.element, ""}, dir, depth);
     }
     if (!data_error.empty()) return tell(quoted + ": " + data_error + "; skipped");
-    const ResourcePath file = resolve_resource_path(href, dir, options_.resources_dir);
+    const ResourcePath file = resolve_resource_path(href, dir, options_.resources_dir, root_dir());
     if (!file.error.empty()) return tell(file.error + "; skipped");
     if (std::find(sheet_chain_.begin(), sheet_chain_.end(), file.path) != sheet_chain_.end())
         return tell(quoted + " imports itself; skipped");
-    const TextFile f = read_text_file(file.path, options_.max_attribute_bytes);
+    if (left == 0) return over();
+    // Read up to what is left: a larger file is refused from its size.
+    const TextFile f = read_text_file(file.path, left);
     if (!f.error.empty()) return tell(f.error + "; skipped");
+    budget.sheet_bytes += f.text.size();
     sheet_chain_.push_back(file.path);
     parse_sheet(f.text, {file.path, 1, where.element, ""},
                 std::filesystem::path(file.path).parent_path().string(), depth);

@@ -411,14 +411,21 @@ void Reader::read_style_sheets(const pugi::xml_node& root) {
     std::vector<pugi::xml_node> styles;
     struct Walker : pugi::xml_tree_walker {
         std::vector<pugi::xml_node>* out;
+        bool external_use = false; // a <use> of another file's element
         bool for_each(pugi::xml_node& e) override {
-            if (e.type() == pugi::node_element && std::strcmp(e.name(), "style") == 0)
-                out->push_back(e);
+            if (e.type() != pugi::node_element) return true;
+            if (std::strcmp(e.name(), "style") == 0) out->push_back(e);
+            if (std::strcmp(e.name(), "use") == 0) {
+                const std::string_view href = trim(href_of(e));
+                external_use = external_use || (!href.empty() && href[0] != '#');
+            }
             return true;
         }
     } walker;
     walker.out = &styles;
     pugi::xml_node(root).traverse(walker);
+    // Another file's elements may read custom properties this one sets.
+    vars_ = vars_ || walker.external_use;
     linked_style_sheets(root);
     for (const pugi::xml_node& st : styles) {
         const std::string_view type = st.attribute("type").value();
@@ -442,6 +449,9 @@ void Reader::read_style_sheets(const pugi::xml_node& root) {
 // relative URLs start.
 void Reader::parse_sheet(std::string_view css, const SvgDiagnostic& at, const std::string& dir,
                          int depth) {
+    // A var() in any sheet: custom properties are tracked (set_text looks
+    // only at the document's own text).
+    vars_ = vars_ || css.find("var(") != std::string_view::npos;
     std::vector<CssProblem> problems;
     const std::vector<CssImport> imports = css_imports(css, problems);
     sheet_problems(problems, at);

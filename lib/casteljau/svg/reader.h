@@ -39,12 +39,17 @@ namespace casteljau {
 /// What a document and the SVG images it draws have read, counted together
 /// against SvgOptions::max_images and max_image_pixels_total.
 struct ImageBudget {
-    std::size_t images = 0; ///< raster and SVG images read
-    std::size_t pixels = 0; ///< raster pixels decoded
+    std::size_t images = 0;      ///< raster and SVG images read, and files <use> draws from
+    std::size_t pixels = 0;      ///< raster pixels decoded
+    std::size_t file_bytes = 0;  ///< of the files <use> draws from (max_file_bytes in all)
+    std::size_t sheets = 0;      ///< style sheet files read (kMaxStyleSheetFiles)
+    std::size_t sheet_bytes = 0; ///< their text (max_attribute_bytes in all)
 };
 
 /// Style sheet files one document reads, its xml-stylesheet links and
-/// every \@import together (each read as often as it is imported).
+/// every \@import together (each read as often as it is imported), those of
+/// its SVG images and of the files its \<use\>s draw from included; their
+/// text is at most SvgOptions::max_attribute_bytes in all.
 inline constexpr std::size_t kMaxStyleSheetFiles = 256;
 /// How deep \@import rules nest (a sheet importing a sheet importing ...).
 inline constexpr int kMaxStyleSheetNesting = 16;

@@ -184,7 +184,7 @@ std::optional<DataUrl> parse_data_url(std::string_view url, std::string& error) 
 }
 
 ResourcePath resolve_resource_path(std::string_view href, const std::string& svg_dir,
-                                   const std::string& resources_dir) {
+                                   const std::string& resources_dir, const std::string& root_dir) {
     const std::string text = url_text(href);
     std::string_view ref = std::string_view(text).substr(0, text.find_first_of("?#"));
     const auto network = [&] {
@@ -218,7 +218,8 @@ ResourcePath resolve_resource_path(std::string_view href, const std::string& svg
         const fs::path root = fs::canonical(folder, root_ec);
         return !root_ec && within(target, root);
     };
-    if (!inside(dir.string()) && (resources_dir.empty() || !inside(resources_dir)))
+    if (!inside(root_dir.empty() ? dir.string() : root_dir) &&
+        (resources_dir.empty() || !inside(resources_dir)))
         return {"", quoted(href) + ": outside the SVG's folder and the resources directory"};
     return {target.string(), ""};
 }

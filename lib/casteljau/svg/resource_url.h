@@ -32,9 +32,12 @@ struct ResourcePath {
 /// Resolves `href` (a relative or absolute path, or a file: URL; query and
 /// fragment ignored, percent-escapes decoded) against `svg_dir`, the folder
 /// of the SVG (the current directory when empty). The result must lie within
-/// svg_dir, or within `resources_dir` when that is not empty, after symlinks
+/// `root_dir` (svg_dir when empty: a file that another file names, a style
+/// sheet or a sprite, resolves against its own folder but stays within the
+/// SVG's), or within `resources_dir` when that is not empty, after symlinks
 /// are resolved; any other scheme, or a host, is refused: no network access.
 ResourcePath resolve_resource_path(std::string_view href, const std::string& svg_dir,
-                                   const std::string& resources_dir);
+                                   const std::string& resources_dir,
+                                   const std::string& root_dir = "");
 
 } // namespace casteljau

@@ -233,14 +233,19 @@ class Reader {
     struct ContextPaints;
     void draw_use(const pugi::xml_node& n, Reader& doc, const pugi::xml_node& target,
                   const StyleState& parent_style, const StyleState& style, const Affine& m,
-                  Group& out, int depth);
+                  Group& out, int depth, const std::string& key = {});
     void instance(const pugi::xml_node& target, const StyleState& style, const Affine& m,
                   ContextPaints paints, const UseSize& size, Group& out, int depth);
     // An element of another file (svg/external_use.cpp).
+    void external_instance(Reader& doc, const std::string& key, const pugi::xml_node& target,
+                           const StyleState& style, const Affine& m, ContextPaints paints,
+                           const UseSize& size, Group& out, int depth);
     void external_use(const pugi::xml_node& n, std::string_view href,
                       const StyleState& parent_style, const StyleState& style, const Affine& m,
                       Group& out, int depth);
     Reader* external_document(const pugi::xml_node& n, const std::string& path);
+    struct ExternalDocument;
+    void load_external(ExternalDocument& d, const std::string& path);
     void nested_viewport(const pugi::xml_node& n, const UseSize* use, const StyleState& style,
                          const ElementProps& props, const Affine& m, Group& out, int depth);
     // clip-path, mask, mix-blend-mode, isolation (svg/clip_mask.cpp).
@@ -428,21 +433,27 @@ class Reader {
         Affine space;
     };
     std::vector<ContextPaints> context_;
-    // The files a <use> draws from, by canonical path, each read once; their
-    // readers keep their text and tree.
+    // A file a <use> draws from; its reader keeps its text and tree.
     struct ExternalDocument {
-        std::string text;               ///< the file's (inflated) text
-        std::unique_ptr<Reader> reader; ///< null when the file cannot be used
-        std::string error;              ///< why not
+        std::string text;                    ///< the file's (inflated) text
+        std::unique_ptr<Reader> reader;      ///< null when the file cannot be used
+        std::string error;                   ///< why not
+        std::vector<SvgDiagnostic> warnings; ///< its reading's, until a use tells them
     };
-    std::map<std::string, ExternalDocument> externals_;
+    // What every reader of one document shares (the document read's and
+    // those of the files its <use>s draw from, external_use.cpp): the files,
+    // each read once, by canonical path; the other files' elements being
+    // instanced ("path#id", outermost first), so that a cycle through several
+    // files is found where it closes; the folder every file stays within.
+    struct SharedFiles {
+        std::map<std::string, ExternalDocument> documents;
+        std::vector<std::string> chain;
+        std::string root_dir;
+    };
+    std::unique_ptr<SharedFiles> own_files_ = std::make_unique<SharedFiles>(); // the first reader's
+    SharedFiles* files_ = own_files_.get();
+    const std::string& root_dir();
     std::vector<std::string> sheet_chain_; // the style sheet files being read, outermost first
-    std::size_t sheet_files_ = 0;          // read so far, against kMaxStyleSheetFiles
-    // The other files' elements being instanced ("path#id"), in the document
-    // read and every file it draws from (one list, shared): a cycle through
-    // several files is found where it closes.
-    std::shared_ptr<std::vector<std::string>> external_chain_ =
-        std::make_shared<std::vector<std::string>>();
     int depth_ = 0;          // the nesting depth of the shape being painted, for its patterns
     bool clip_mode_ = false; // drawing a clipPath's content: opaque fills of shapes only
     bool quiet_ = false;     // style_of re-reads ancestors: their problems were told  //
