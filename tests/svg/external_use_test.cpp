@@ -298,5 +298,82 @@ TEST(ExternalUse, FilesStayWithinTheSvgsFolderNotTheirOwn) {
     EXPECT_TRUE(near(at(d, 2, 2), kLime, 1e-6f));
 }
 
+// main draws b.svg#x, which draws c.svg#y, which draws b.svg#z: b.svg's
+// warnings come in the order its elements are drawn (second review: the
+// inner instance took the outer one's warnings along, after its own).
+TEST(ExternalUse, WarningsComeInDrawingOrderThroughAReenteredFile) {
+    const Sprites s;
+    write_text(s.dir / "b.svg", document("<g id=\"x\">\n<rect width=\"-1\" height=\"2\"/>\n"
+                                         "<use href=\"c.svg#y\"/>\n"
+                                         "<rect width=\"-2\" height=\"2\"/></g>\n"
+                                         "<rect id=\"z\" width=\"-3\" height=\"2\"/>",
+                                         10, 10));
+    write_text(
+        s.dir / "c.svg",
+        document(R"(<g id="y"><rect width="-4" height="2"/><use href="b.svg#z"/></g>)", 10, 10));
+    const Drawn d = s.render(R"(<use href="b.svg#x"/>)");
+    ASSERT_EQ(d.warnings.size(), 4u) << warnings_text(d.warnings);
+    const std::pair<const char*, int> order[] = {
+        {"b.svg", 2}, {"c.svg", 1}, {"b.svg", 5}, {"b.svg", 4}};
+    for (std::size_t i = 0; i < 4; ++i) {
+        EXPECT_TRUE(d.warnings[i].file.ends_with(order[i].first)) << warnings_text(d.warnings);
+        EXPECT_EQ(d.warnings[i].line, order[i].second) << warnings_text(d.warnings);
+    }
+}
+
+// The bytes of all files drawn from are bounded before they are held: a
+// file is read (and inflated) up to what is left of max_file_bytes.
+TEST(ExternalUse, TheFilesBytesAreBoundedInAll) {
+    const Sprites s;
+    const std::string pad(600, ' ');
+    write_text(s.dir / "p.svg", document(R"(<rect id="r" width="2" height="2"/>)" + pad, 10, 10));
+    write_text(s.dir / "q.svg", document(R"(<rect id="r" width="2" height="2"/>)" + pad, 10, 10));
+    SvgOptions o;
+    o.max_file_bytes = 1000;
+    const Drawn d =
+        s.render(R"(<use href="p.svg#r" fill="lime"/><use href="q.svg#r" x="5" fill="lime"/>)", o);
+    ASSERT_EQ(d.warnings.size(), 1u) << warnings_text(d.warnings);
+    EXPECT_NE(d.warnings[0].message.find("exceed the limit"), std::string::npos)
+        << d.warnings[0].message;
+    EXPECT_TRUE(near(at(d, 1, 1), kLime, 1e-6f));
+    EXPECT_TRUE(near(at(d, 6, 1), kNone, 1e-6f));
+}
+
+// An href with spaces around it counts in the bound on what uses expand to,
+// checked before anything is built (second review: 10^9 instances were
+// built up to the element limit).
+TEST(ExternalUse, SpacesAroundAnHrefCountInTheExpansionBound) {
+    std::string body = R"(<rect id="a0" width="1" height="1"/>)";
+    for (int i = 1; i <= 9; ++i) {
+        body += cat(cat(R"(<g id="a)", std::to_string(i)), "\">");
+        for (int k = 0; k < 10; ++k)
+            body += cat(cat(R"(<use href=" #a)", std::to_string(i - 1)), " \"/>");
+        body += "</g>";
+    }
+    const SvgResult r = parse_svg(document(body, 10, 10), "t.svg");
+    EXPECT_FALSE(r.scene);
+    EXPECT_NE(r.error.find("once <use> is expanded"), std::string::npos) << r.error;
+}
+
+// A file drawn from may draw images from elsewhere in the SVG's folder, as
+// it may use files and sheets; an image's problem found while a use is
+// measured is told by the walk that draws (second review: never told).
+TEST(ExternalUse, ItsImagesStayWithinTheSvgsFolderAndTheirProblemsAreTold) {
+    const Sprites s;
+    fs::create_directories(s.dir.path / "icons");
+    write_green(s.dir / "pic.png", 2, 2);
+    write_text(s.dir / "icons/i.svg",
+               document(R"(<image id="i" href="../pic.png" width="4" height="4"/>)", 10, 10));
+    const Drawn d = s.render(R"(<use href="icons/i.svg#i"/>)");
+    EXPECT_TRUE(d.warnings.empty()) << warnings_text(d.warnings);
+    EXPECT_TRUE(near(at(d, 2, 2), kLime, 1e-6f));
+    const Drawn missing =
+        s.render(R"(<linearGradient id="g"><stop offset="0" stop-color="red"/></linearGradient>)"
+                 R"(<g id="m"><image href="missing.png" width="4" height="4"/></g>)"
+                 R"x(<use href="#m" fill="url(#g)"/>)x");
+    ASSERT_EQ(missing.warnings.size(), 1u) << warnings_text(missing.warnings);
+    EXPECT_NE(missing.warnings[0].message.find("cannot be drawn"), std::string::npos);
+}
+
 } // namespace
 } // namespace casteljau

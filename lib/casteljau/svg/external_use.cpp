@@ -92,17 +92,19 @@ void Reader::external_instance(Reader& doc, const std::string& key, const pugi::
         double vw = to.vw_, vh = to.vh_, rem = to.root_font_size_;
         bool clip_mode = to.clip_mode_, quiet = to.quiet_;
         int depth = to.depth_;
+        std::vector<SvgDiagnostic> warnings; // its outer instance's, not yet passed on
         Enter(Reader& t, Reader& f, const std::string& key) : to(t), from(f) {
             to.vw_ = from.vw_, to.vh_ = from.vh_, to.root_font_size_ = from.root_font_size_;
             to.clip_mode_ = from.clip_mode_, to.quiet_ = from.quiet_, to.depth_ = from.depth_;
             to.elements_ = from.elements_, to.text_characters_ = from.text_characters_;
+            warnings.swap(to.warnings_);
             from.files_->chain.push_back(key);
         }
         ~Enter() {
             from.files_->chain.pop_back();
             from.elements_ = to.elements_, from.text_characters_ = to.text_characters_;
             for (SvgDiagnostic& w : to.warnings_) from.warnings_.push_back(std::move(w));
-            to.warnings_.clear();
+            to.warnings_ = std::move(warnings);
             to.vw_ = vw, to.vh_ = vh, to.root_font_size_ = rem;
             to.clip_mode_ = clip_mode, to.quiet_ = quiet, to.depth_ = depth;
         }
@@ -128,26 +130,30 @@ Reader* Reader::external_document(const pugi::xml_node& n, const std::string& pa
     ExternalDocument& d = it->second;
     if (fresh) {
         ImageBudget& budget = *options_.image_budget;
+        // Read, and inflated, up to what is left of the bytes all may hold.
+        const std::size_t left =
+            options_.max_file_bytes - std::min(budget.file_bytes, options_.max_file_bytes);
         if (++budget.images > options_.max_images) {
             d.error = "more than " + std::to_string(options_.max_images) +
                       " images and files in the document (the limit)";
-        } else if (TextFile f = read_text_file(path, options_.max_file_bytes); !f.error.empty()) {
+        } else if (left == 0) {
+            d.error = "more than " + std::to_string(options_.max_file_bytes) +
+                      " bytes of files drawn from (the limit)";
+        } else if (TextFile f = read_text_file(path, left); !f.error.empty()) {
             d.error = f.error;
         } else {
             d.text = std::move(f.text);
             const std::span<const unsigned char> bytes(
                 reinterpret_cast<const unsigned char*>(d.text.data()), d.text.size());
-            if (is_gzip(bytes)) { // SVGZ, inflated under the same limit
-                Gunzipped svg = gunzip(bytes, options_.max_file_bytes);
+            if (is_gzip(bytes)) { // SVGZ
+                Gunzipped svg = gunzip(bytes, left);
                 d.error = svg.error.empty() ? "" : path + ": gzip data: " + svg.error;
                 d.text = std::move(svg.data);
             }
             budget.file_bytes += d.text.size();
-            if (d.error.empty() && budget.file_bytes > options_.max_file_bytes)
-                d.error = "more than " + std::to_string(options_.max_file_bytes) +
-                          " bytes of files drawn from (the limit)";
         }
         if (d.error.empty()) load_external(d, path);
+        if (!d.reader) d.text = std::string(); // nothing will read it
     }
     if (!quiet_) { // told by the first use that tells anything
         for (SvgDiagnostic& w : d.warnings) warnings_.push_back(std::move(w));

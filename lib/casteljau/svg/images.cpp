@@ -76,11 +76,21 @@ bool has_svg_extension(const std::string& path) {
 const Reader::ImageSource& Reader::image_source(const pugi::xml_node& n, const std::string& href) {
     if (const auto it = images_.find(href); it != images_.end()) return it->second;
     ImageSource& src = images_[href];
+    read_image_source(n, href, src);
+    // Read in a quiet pass (fill_box's measure), a failure's problem went
+    // untold: the pass that tells reads it again.
+    if (!quiet_ || src.raster || src.svg) return src;
+    images_.erase(href);
+    static const ImageSource none;
+    return none;
+}
+
+void Reader::read_image_source(const pugi::xml_node& n, const std::string& href, ImageSource& src) {
     ImageBudget& budget = *options_.image_budget;
     if (++budget.images > options_.max_images) {
         problem(n, "more than " + std::to_string(options_.max_images) +
                        " images in the document and its SVG images (the limit); not drawn");
-        return src;
+        return;
     }
     // What is left of the pixels all the images may decode, at most one image's limit.
     const std::size_t pixels = std::min(
@@ -121,17 +131,17 @@ const Reader::ImageSource& Reader::image_source(const pugi::xml_node& n, const s
         } else {
             raster_from(decode_image(data->bytes, pixels));
         }
-        return src;
+        return;
     }
     if (!error.empty()) {
         problem(n, "href: " + error + "; not drawn");
-        return src;
+        return;
     }
     const ResourcePath file =
-        resolve_resource_path(href, options_.base_dir, options_.resources_dir);
+        resolve_resource_path(href, options_.base_dir, options_.resources_dir, root_dir());
     if (!file.error.empty()) {
         problem(n, "href " + file.error + "; not drawn");
-        return src;
+        return;
     }
     if (has_svg_extension(file.path)) {
         nested.base_dir.clear(); // its own folder
@@ -139,7 +149,6 @@ const Reader::ImageSource& Reader::image_source(const pugi::xml_node& n, const s
     } else {
         raster_from(read_image_file(file.path, pixels));
     }
-    return src;
 }
 
 void Reader::image(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out,

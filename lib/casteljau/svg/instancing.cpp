@@ -185,8 +185,9 @@ std::size_t Reader::expanded_size(const pugi::xml_node& n, int depth) {
     sizes_[n.internal_object()] = 1; // a cycle back to n: the walk skips it
     std::size_t total = 1;
     if (std::string_view(n.name()) == "use") {
-        const char* href = href_of(n);
-        if (const pugi::xml_node t = href[0] == '#' ? by_id(href + 1) : pugi::xml_node())
+        const std::string_view href = trim(href_of(n));
+        if (const pugi::xml_node t =
+                href.starts_with('#') ? by_id(std::string(href.substr(1))) : pugi::xml_node())
             total += expanded_size(t, depth + 1);
     } else if (!silently_skipped(n.name())) {
         for (const pugi::xml_node& c : n.children())

@@ -156,9 +156,10 @@ void Reader::import_sheet(const SvgDiagnostic& where, const std::string& href,
     if (!file.error.empty()) return tell(file.error + "; skipped");
     if (std::find(sheet_chain_.begin(), sheet_chain_.end(), file.path) != sheet_chain_.end())
         return tell(quoted + " imports itself; skipped");
-    if (left == 0) return over();
-    // Read up to what is left: a larger file is refused from its size.
-    const TextFile f = read_text_file(file.path, left);
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(file.path, ec);
+    if (left == 0 || (!ec && size > left)) return over();
+    const TextFile f = read_text_file(file.path, left); // a file that grew meanwhile: its error
     if (!f.error.empty()) return tell(f.error + "; skipped");
     budget.sheet_bytes += f.text.size();
     sheet_chain_.push_back(file.path);

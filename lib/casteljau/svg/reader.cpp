@@ -5,6 +5,7 @@
 #include "casteljau/io/text_file.h"
 #include "casteljau/render/output_size.h"
 #include "casteljau/svg/conditional.h"
+#include "casteljau/svg/custom_properties.h"
 #include "casteljau/svg/detail/ascii.h"
 #include "casteljau/svg/detail/css_pugi.h"
 #include "casteljau/svg/detail/reader_impl.h"
@@ -451,7 +452,7 @@ void Reader::parse_sheet(std::string_view css, const SvgDiagnostic& at, const st
                          int depth) {
     // A var() in any sheet: custom properties are tracked (set_text looks
     // only at the document's own text).
-    vars_ = vars_ || css.find("var(") != std::string_view::npos;
+    vars_ = vars_ || has_var(css);
     std::vector<CssProblem> problems;
     const std::vector<CssImport> imports = css_imports(css, problems);
     sheet_problems(problems, at);

@@ -39,9 +39,9 @@ namespace casteljau {
 /// What a document and the SVG images it draws have read, counted together
 /// against SvgOptions::max_images and max_image_pixels_total.
 struct ImageBudget {
-    std::size_t images = 0;      ///< raster and SVG images read, and files <use> draws from
+    std::size_t images = 0;      ///< raster and SVG images read, and files \<use\> draws from
     std::size_t pixels = 0;      ///< raster pixels decoded
-    std::size_t file_bytes = 0;  ///< of the files <use> draws from (max_file_bytes in all)
+    std::size_t file_bytes = 0;  ///< of the files \<use\> draws from (max_file_bytes in all)
     std::size_t sheets = 0;      ///< style sheet files read (kMaxStyleSheetFiles)
     std::size_t sheet_bytes = 0; ///< their text (max_attribute_bytes in all)
 };

@@ -360,6 +360,7 @@ class Reader {
         double width = 0, height = 0;
     };
     const ImageSource& image_source(const pugi::xml_node& n, const std::string& href);
+    void read_image_source(const pugi::xml_node& n, const std::string& href, ImageSource& src);
     // `given`, when given, is the viewport instead of x, y, width, height
     // (feImage's subregion).
     void image(const pugi::xml_node& n, const StyleState& style, const Affine& m, Group& out,
