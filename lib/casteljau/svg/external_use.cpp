@@ -69,7 +69,7 @@ void Reader::external_use(const pugi::xml_node& n, std::string_view href,
     const pugi::xml_node target = id.empty() ? doc->root_ : doc->by_id(id);
     if (!target) return problem(n, quoted + " names no element; skipped");
     const std::vector<std::string>& chain = files_->chain;
-    std::string key = file.path + "#" + id;
+    const std::string key = file.path + "#" + id;
     if (std::find(chain.begin(), chain.end(), key) != chain.end())
         return problem(n, quoted + " makes a cycle; skipped");
     if (chain.size() >= std::size_t(std::max(options_.max_image_nesting, 0)))
@@ -115,9 +115,13 @@ void Reader::external_instance(Reader& doc, const std::string& key, const pugi::
 // The folder every file the document reads stays within (with
 // resources_dir): the document read's.
 const std::string& Reader::root_dir() {
-    if (files_->root_dir.empty())
-        files_->root_dir = options_.base_dir.empty() ? std::filesystem::current_path().string()
-                                                     : options_.base_dir;
+    if (files_->root_dir.empty()) {
+        std::error_code ec; // no current directory: "." resolves to nothing, nothing is read
+        const std::filesystem::path here = std::filesystem::current_path(ec);
+        files_->root_dir = !options_.base_dir.empty() ? options_.base_dir
+                           : ec                       ? std::string(".")
+                                                      : here.string();
+    }
     return files_->root_dir;
 }
 
