@@ -10,9 +10,9 @@
 // is converted to an ARGB32 surface once and kept (an application would
 // decode it once) and sampled with CAIRO_FILTER_GOOD, as librsvg draws
 // images (bilinear, but a box over each pixel's footprint where the image
-// is shrunk, as Casteljau's levels stand in for), a pattern's tile drawn by Cairo each time it is used, at
-// the device resolution, as Casteljau draws it. Clips, masks, filters and
-// blend modes are left out.
+// is shrunk, as Casteljau's levels stand in for), a pattern's tile drawn by Cairo each time it is
+// used, at the device resolution, as Casteljau draws it. Clips, masks, filters and blend modes are
+// left out.
 #pragma once
 
 #include "casteljau/scene/scene.h"

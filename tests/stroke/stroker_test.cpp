@@ -38,7 +38,6 @@ Rect bounds_of(const std::vector<Polygon>& polys) {
     return r;
 }
 
-
 // Distance from q to the cubic (dense sampling, then golden-section refinement).
 double distance_to_curve(const CubicBez& c, Point q) {
     int best = 0;

@@ -151,9 +151,8 @@ double LengthContext::diagonal() const {
 std::optional<double> parse_length(std::string_view text, double percent_of,
                                    const LengthContext& ctx) {
     if (is_css_math(text))
-        return eval_css_math(text, [&](std::string_view leaf) {
-            return parse_length(leaf, percent_of, ctx);
-        });
+        return eval_css_math(
+            text, [&](std::string_view leaf) { return parse_length(leaf, percent_of, ctx); });
     std::string_view unit;
     const auto v = parse_number(text, &unit);
     if (!v) return std::nullopt;

@@ -229,8 +229,8 @@ std::optional<std::string> apply_element_property(std::string_view name, std::st
         return set(t.baseline_shift, p.baseline_shift, initial.baseline_shift,
                    parse_baseline_shift(value, ctx), "baseline, sub, super or a length");
     if (name == "unicode-bidi")
-        return set(t.unicode_bidi, p.unicode_bidi, initial.unicode_bidi,
-                   parse_unicode_bidi(value), "a unicode-bidi value");
+        return set(t.unicode_bidi, p.unicode_bidi, initial.unicode_bidi, parse_unicode_bidi(value),
+                   "a unicode-bidi value");
     if (name == "text-decoration" || name == "text-decoration-line")
         return set(t.decoration, p.decoration, initial.decoration,
                    parse_decoration(value, name == "text-decoration", ctx),
