@@ -32,6 +32,10 @@ struct Sprites {
                                                     R"(<rect width="1" height="1" fill="blue"/>)"
                                                     "</svg>"));
     }
+    // `body` as the 10 x 10 document `name` in the folder.
+    void file(const std::string& name, const std::string& body) const {
+        write_text(dir / name, document(body, 10, 10));
+    }
     Drawn render(const std::string& body, SvgOptions o = {}) const {
         return testing::render(body, 10, 10, dir.str(), o);
     }
@@ -98,10 +102,9 @@ TEST(ExternalUse, AProblemInsideTheFileNamesItsFileAndLine) {
 
 TEST(ExternalUse, AFileThatNamesItselfIsTheSameDocument) {
     const Sprites s;
-    write_text(s.dir / "self.svg", document(R"(<rect id="r" width="2" height="2" fill="lime"/>)"
-                                            "\n"
-                                            R"(<use href="self.svg#r" x="5" y="5"/>)",
-                                            10, 10));
+    s.file("self.svg", R"(<rect id="r" width="2" height="2" fill="lime"/>)"
+                       "\n"
+                       R"(<use href="self.svg#r" x="5" y="5"/>)");
     SvgOptions no_files; // it reads no file to do so
     no_files.max_images = 0;
     const SvgResult doc = read_svg_file(s.dir / "self.svg", no_files);
@@ -109,7 +112,7 @@ TEST(ExternalUse, AFileThatNamesItselfIsTheSameDocument) {
     EXPECT_TRUE(d.warnings.empty()) << warnings_text(d.warnings);
     EXPECT_TRUE(near(at(d, 6, 6), kLime, 1e-6f));
     // Its own element instanced inside itself is the use-in-its-target case.
-    write_text(s.dir / "loop.svg", document(R"(<g id="x"><use href="loop.svg#x"/></g>)", 10, 10));
+    s.file("loop.svg", R"(<g id="x"><use href="loop.svg#x"/></g>)");
     const SvgResult loop = read_svg_file(s.dir / "loop.svg");
     ASSERT_EQ(loop.warnings.size(), 1u) << warnings_text(loop.warnings);
     EXPECT_NE(loop.warnings[0].message.find("contains the use itself"), std::string::npos);
@@ -152,10 +155,9 @@ TEST(ExternalUse, EveryFailedReferenceIsOneWarningOnTheUseAndDrawsNothing) {
 
 TEST(ExternalUse, ACycleThroughFilesIsFoundWhereItCloses) {
     const Sprites s;
-    write_text(s.dir / "a.svg", document(R"(<g id="x"><use href="b.svg#y"/></g>)", 10, 10));
-    write_text(s.dir / "b.svg", document("<g id=\"y\"><rect width=\"3\" height=\"3\"/>\n"
-                                         R"(<use href="a.svg#x" x="5"/></g>)",
-                                         10, 10));
+    s.file("a.svg", R"(<g id="x"><use href="b.svg#y"/></g>)");
+    s.file("b.svg", "<g id=\"y\"><rect width=\"3\" height=\"3\"/>\n"
+                    R"(<use href="a.svg#x" x="5"/></g>)");
     const Drawn d = s.render(R"(<use href="a.svg#x" fill="lime"/>)");
     ASSERT_EQ(d.warnings.size(), 1u) << warnings_text(d.warnings);
     EXPECT_TRUE(d.warnings[0].file.ends_with("b.svg")) << d.warnings[0].file;
@@ -192,7 +194,7 @@ TEST(ExternalUse, InstancesCountAgainstMaxElementsAndFilesAgainstMaxImages) {
     const Sprites s;
     std::string group = R"(<g id="many">)";
     for (int i = 0; i < 30; ++i) group += R"(<rect width="1" height="1"/>)";
-    write_text(s.dir / "many.svg", document(group + "</g>", 10, 10));
+    s.file("many.svg", group + "</g>");
     SvgOptions o;
     o.base_dir = s.dir.str();
     o.max_elements = 100;
@@ -224,9 +226,9 @@ TEST(ExternalUse, InstancesCountAgainstMaxElementsAndFilesAgainstMaxImages) {
 // times (review: 16 files, 45 s and 9.8 GB before).
 TEST(ExternalUse, AFileUsedFromSeveralFilesIsReadOnce) {
     const Sprites s;
-    write_text(s.dir / "c.svg", document(R"(<rect id="r" width="2" height="2"/>)", 10, 10));
-    write_text(s.dir / "a.svg", document(R"(<g id="x"><use href="c.svg#r"/></g>)", 10, 10));
-    write_text(s.dir / "b.svg", document(R"(<g id="x"><use href="c.svg#r" x="5"/></g>)", 10, 10));
+    s.file("c.svg", R"(<rect id="r" width="2" height="2"/>)");
+    s.file("a.svg", R"(<g id="x"><use href="c.svg#r"/></g>)");
+    s.file("b.svg", R"(<g id="x"><use href="c.svg#r" x="5"/></g>)");
     SvgOptions three;
     three.max_images = 3; // a, b and c, each once
     const Drawn d =
@@ -240,11 +242,9 @@ TEST(ExternalUse, AFileUsedFromSeveralFilesIsReadOnce) {
 // a.svg, in the middle of drawing #x, draws #z and goes on where it was.
 TEST(ExternalUse, AReaderDrawingAlreadyDrawsAgainAndGoesOn) {
     const Sprites s;
-    write_text(s.dir / "a.svg",
-               document(R"(<g id="x"><use href="b.svg#y"/><rect y="5" width="2" height="2"/></g>)"
-                        R"(<rect id="z" width="2" height="2"/>)",
-                        10, 10));
-    write_text(s.dir / "b.svg", document(R"(<g id="y"><use href="a.svg#z" x="5"/></g>)", 10, 10));
+    s.file("a.svg", R"(<g id="x"><use href="b.svg#y"/><rect y="5" width="2" height="2"/></g>)"
+                    R"(<rect id="z" width="2" height="2"/>)");
+    s.file("b.svg", R"(<g id="y"><use href="a.svg#z" x="5"/></g>)");
     const Drawn d = s.render(R"(<use href="a.svg#x" fill="lime"/>)");
     EXPECT_TRUE(d.warnings.empty()) << warnings_text(d.warnings);
     EXPECT_TRUE(near(at(d, 6, 1), kLime, 1e-6f)) << "a.svg#z through b.svg";
@@ -257,9 +257,7 @@ TEST(ExternalUse, AReaderDrawingAlreadyDrawsAgainAndGoesOn) {
 // and took it for a cycle).
 TEST(ExternalUse, ContextPaintsTakeTheUsesBox) {
     const Sprites s;
-    write_text(
-        s.dir / "c.svg",
-        document(R"(<rect id="r" width="10" height="10" style="fill: context-fill"/>)", 10, 10));
+    s.file("c.svg", R"(<rect id="r" width="10" height="10" style="fill: context-fill"/>)");
     const Drawn d = s.render(R"(<linearGradient id="g"><stop offset="0.5" stop-color="lime"/>)"
                              R"(<stop offset="0.5" stop-color="blue"/></linearGradient>)"
                              R"x(<use href="c.svg#r" fill="url(#g)"/>)x");
@@ -290,9 +288,8 @@ TEST(ExternalUse, FilesStayWithinTheSvgsFolderNotTheirOwn) {
     const Sprites s;
     fs::create_directories(s.dir.path / "icons");
     fs::create_directories(s.dir.path / "shared");
-    write_text(s.dir / "shared/r.svg", document(R"(<rect id="r" width="4" height="4"/>)", 10, 10));
-    write_text(s.dir / "icons/i.svg",
-               document(R"(<use id="i" href="../shared/r.svg#r"/>)", 10, 10));
+    s.file("shared/r.svg", R"(<rect id="r" width="4" height="4"/>)");
+    s.file("icons/i.svg", R"(<use id="i" href="../shared/r.svg#r"/>)");
     const Drawn d = s.render(R"(<use href=" icons/i.svg#i " fill="lime"/>)");
     EXPECT_TRUE(d.warnings.empty()) << warnings_text(d.warnings);
     EXPECT_TRUE(near(at(d, 2, 2), kLime, 1e-6f));
@@ -303,14 +300,11 @@ TEST(ExternalUse, FilesStayWithinTheSvgsFolderNotTheirOwn) {
 // inner instance took the outer one's warnings along, after its own).
 TEST(ExternalUse, WarningsComeInDrawingOrderThroughAReenteredFile) {
     const Sprites s;
-    write_text(s.dir / "b.svg", document("<g id=\"x\">\n<rect width=\"-1\" height=\"2\"/>\n"
-                                         "<use href=\"c.svg#y\"/>\n"
-                                         "<rect width=\"-2\" height=\"2\"/></g>\n"
-                                         "<rect id=\"z\" width=\"-3\" height=\"2\"/>",
-                                         10, 10));
-    write_text(
-        s.dir / "c.svg",
-        document(R"(<g id="y"><rect width="-4" height="2"/><use href="b.svg#z"/></g>)", 10, 10));
+    s.file("b.svg", "<g id=\"x\">\n<rect width=\"-1\" height=\"2\"/>\n"
+                    "<use href=\"c.svg#y\"/>\n"
+                    "<rect width=\"-2\" height=\"2\"/></g>\n"
+                    "<rect id=\"z\" width=\"-3\" height=\"2\"/>");
+    s.file("c.svg", R"(<g id="y"><rect width="-4" height="2"/><use href="b.svg#z"/></g>)");
     const Drawn d = s.render(R"(<use href="b.svg#x"/>)");
     ASSERT_EQ(d.warnings.size(), 4u) << warnings_text(d.warnings);
     const std::pair<const char*, int> order[] = {
@@ -326,8 +320,8 @@ TEST(ExternalUse, WarningsComeInDrawingOrderThroughAReenteredFile) {
 TEST(ExternalUse, TheFilesBytesAreBoundedInAll) {
     const Sprites s;
     const std::string pad(600, ' ');
-    write_text(s.dir / "p.svg", document(R"(<rect id="r" width="2" height="2"/>)" + pad, 10, 10));
-    write_text(s.dir / "q.svg", document(R"(<rect id="r" width="2" height="2"/>)" + pad, 10, 10));
+    s.file("p.svg", R"(<rect id="r" width="2" height="2"/>)" + pad);
+    s.file("q.svg", R"(<rect id="r" width="2" height="2"/>)" + pad);
     SvgOptions o;
     o.max_file_bytes = 1000;
     const Drawn d =
@@ -362,8 +356,7 @@ TEST(ExternalUse, ItsImagesStayWithinTheSvgsFolderAndTheirProblemsAreTold) {
     const Sprites s;
     fs::create_directories(s.dir.path / "icons");
     write_green(s.dir / "pic.png", 2, 2);
-    write_text(s.dir / "icons/i.svg",
-               document(R"(<image id="i" href="../pic.png" width="4" height="4"/>)", 10, 10));
+    s.file("icons/i.svg", R"(<image id="i" href="../pic.png" width="4" height="4"/>)");
     const Drawn d = s.render(R"(<use href="icons/i.svg#i"/>)");
     EXPECT_TRUE(d.warnings.empty()) << warnings_text(d.warnings);
     EXPECT_TRUE(near(at(d, 2, 2), kLime, 1e-6f));

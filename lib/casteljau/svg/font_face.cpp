@@ -176,12 +176,11 @@ std::optional<std::vector<unsigned char>> Reader::font_source_bytes(const FontFa
 void Reader::load_font_faces(const pugi::xml_node& st, std::size_t first) {
     const std::vector<CssFontFace>& rules = sheet_.font_faces();
     for (std::size_t i = first; i < rules.size(); ++i) {
+        // A problem (strictly read, the error: as an <image> that does not load).
         const auto warn_rule = [&](const std::string& what) {
-            if (quiet_) return;
             SvgDiagnostic d = located(st, "style sheet: @font-face: " + what);
             d.line += rules[i].line - 1;
-            if (options_.strict) throw Failure{d.text()}; // as an <image> that does not load
-            warnings_.push_back(std::move(d));
+            problem_at(std::move(d));
         };
         std::string error;
         const std::optional<FontFaceRule> rule = parse_font_face(rules[i].descriptors, error);

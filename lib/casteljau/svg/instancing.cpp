@@ -3,7 +3,6 @@
 // markers (SVG 2, 13.7: a marker's content drawn at each vertex of a path,
 // line, polyline or polygon, as groups after the shape), and, before any of
 // it is built, the count of what instancing expands to.
-#include "casteljau/svg/detail/ascii.h"
 #include "casteljau/svg/detail/reader_impl.h"
 #include "casteljau/svg/viewport.h"
 
@@ -20,7 +19,7 @@ namespace casteljau::svg_detail {
 // problem, and nothing is drawn. An element of another file: external_use.cpp.
 void Reader::use(const pugi::xml_node& n, const StyleState& parent_style, const StyleState& style,
                  const Affine& m, Group& out, int depth) {
-    const std::string_view href = trim(href_of(n));
+    const std::string_view href = use_href(n);
     if (href.empty()) return;
     if (href[0] != '#') return external_use(n, href, parent_style, style, m, out, depth);
     local_use(n, by_id(std::string(href.substr(1))), "href '" + std::string(href) + "'",
@@ -185,7 +184,7 @@ std::size_t Reader::expanded_size(const pugi::xml_node& n, int depth) {
     sizes_[n.internal_object()] = 1; // a cycle back to n: the walk skips it
     std::size_t total = 1;
     if (std::string_view(n.name()) == "use") {
-        const std::string_view href = trim(href_of(n));
+        const std::string_view href = use_href(n);
         if (const pugi::xml_node t =
                 href.starts_with('#') ? by_id(std::string(href.substr(1))) : pugi::xml_node())
             total += expanded_size(t, depth + 1);

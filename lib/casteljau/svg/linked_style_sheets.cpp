@@ -25,69 +25,27 @@
 // skipped. A UTF-16 document's xml-stylesheet links are not read (the
 // prolog is read as UTF-8 text).
 #include "casteljau/io/text_file.h"
-#include "casteljau/svg/detail/ascii.h"
 #include "casteljau/svg/detail/reader_impl.h"
 #include "casteljau/svg/media_query.h"
 #include "casteljau/svg/resource_url.h"
-#include "casteljau/text/utf8.h"
 
-#include <charconv>
 #include <filesystem>
 
 namespace casteljau::svg_detail {
 
 namespace {
 
-// A pseudo-attribute's value with its character references and the five
-// predefined entities replaced (Associating Style Sheets, 3); others kept.
-std::string decoded(std::string_view v) {
-    std::string out;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-        const std::size_t semi = v[i] == '&' ? v.find(';', i) : std::string_view::npos;
-        if (semi == std::string_view::npos) {
-            out += v[i];
-            continue;
-        }
-        const std::string_view name = v.substr(i + 1, semi - i - 1);
-        constexpr std::pair<std::string_view, char> kNamed[] = {
-            {"amp", '&'}, {"lt", '<'}, {"gt", '>'}, {"quot", '"'}, {"apos", '\''}};
-        bool done = false;
-        for (const auto& [entity, c] : kNamed)
-            if (name == entity) out += c, done = true;
-        if (!done && name.size() > 1 && name[0] == '#') {
-            const bool hex = name[1] == 'x';
-            std::uint32_t cp = 0;
-            const auto [end, ec] = std::from_chars(name.data() + (hex ? 2 : 1),
-                                                   name.data() + name.size(), cp, hex ? 16 : 10);
-            if (ec == std::errc() && end == name.data() + name.size() && cp > 0 && cp < 0x110000)
-                append_utf8(out, char32_t(cp)), done = true;
-        }
-        if (!done) out.append(v.substr(i, semi - i + 1));
-        i = semi;
-    }
-    return out;
-}
-
-// The pseudo-attributes of a processing instruction's text, name="value" or
-// name='value' (Associating Style Sheets, 3); reading ends at anything else.
+// The pseudo-attributes of an xml-stylesheet instruction (Associating Style
+// Sheets, 3), which have the syntax of XML attributes, character and
+// predefined entity references included: read as an element's by pugixml.
+// Malformed, none.
 std::map<std::string, std::string> pseudo_attributes(std::string_view s) {
     std::map<std::string, std::string> out;
-    const auto skip_space = [&] {
-        while (!s.empty() && is_xml_space(s.front())) s.remove_prefix(1);
-    };
-    for (;;) {
-        skip_space();
-        const std::size_t eq = s.find('=');
-        if (eq == std::string_view::npos) return out;
-        const std::string name(trim(s.substr(0, eq)));
-        s.remove_prefix(eq + 1);
-        skip_space();
-        if (s.empty() || (s.front() != '"' && s.front() != '\'')) return out;
-        const std::size_t close = s.find(s.front(), 1);
-        if (close == std::string_view::npos) return out;
-        out.emplace(name, decoded(s.substr(1, close - 1)));
-        s.remove_prefix(close + 1);
-    }
+    pugi::xml_document d;
+    if (!d.load_string(("<x " + std::string(s) + "/>").c_str())) return out;
+    for (const pugi::xml_attribute& a : d.first_child().attributes())
+        out.emplace(a.name(), a.value());
+    return out;
 }
 
 } // namespace

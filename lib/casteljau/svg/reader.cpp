@@ -417,7 +417,7 @@ void Reader::read_style_sheets(const pugi::xml_node& root) {
             if (e.type() != pugi::node_element) return true;
             if (std::strcmp(e.name(), "style") == 0) out->push_back(e);
             if (std::strcmp(e.name(), "use") == 0) {
-                const std::string_view href = trim(href_of(e));
+                const std::string_view href = use_href(e);
                 external_use = external_use || (!href.empty() && href[0] != '#');
             }
             return true;

@@ -1,8 +1,11 @@
 // Internal to the SVG reader (not installed): href links between elements.
 #pragma once
 
+#include "casteljau/svg/detail/ascii.h"
+
 #include <pugixml.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace casteljau::svg_detail {
@@ -16,6 +19,10 @@ inline const char* href_of(const pugi::xml_node& n) {
     if (const pugi::xml_attribute a = n.attribute("href")) return a.value();
     return n.attribute("xlink:href").value();
 }
+
+/// A <use>'s href, the spaces around it dropped (as URL parsing drops them):
+/// what use() draws and what the expansion bound counts must agree.
+inline std::string_view use_href(const pugi::xml_node& n) { return trim(href_of(n)); }
 
 /// The chain of elements from `start` along their hrefs (a paint server
 /// inherits what it lacks from the next, SVG 1.1 13.2.2 and 13.3), each one
