@@ -267,6 +267,25 @@ TEST(Pattern, ObjectBoundingBoxUnitsOnALineTakeTheFallback) {
     EXPECT_EQ(c.row(50)[50].b, 1.0f) << "the user-space pattern";
 }
 
+// A gradient without stops paints as none, its fallback color unused: the
+// reference is to a paint server (SVG 1.1, 13.2.4; resvg's a-fill-025 and
+// a-fill-034). A reference to nothing takes the fallback. Before: the
+// fallback either way.
+TEST(Gradient, ZeroStopsPaintNoneAndNotTheFallback) {
+    std::vector<SvgDiagnostic> w;
+    const Canvas c = render(R"svg(<linearGradient id="none"/>
+        <rect width="50" height="100" fill="url(#none) #00ff00" color="#00ff00"/>
+        <rect x="50" width="50" height="50" fill="url(#none) currentColor" color="#00ff00"/>
+        <rect x="50" y="50" width="50" height="50" fill="url(#missing) #0000ff"/>)svg",
+                            100, &w);
+    EXPECT_EQ(c.row(50)[25].a, 0.0f);
+    EXPECT_EQ(c.row(25)[75].a, 0.0f);
+    EXPECT_EQ(c.row(75)[75].b, 1.0f) << "a reference to nothing takes the fallback";
+    ASSERT_EQ(w.size(), 2u) << "one warning a gradient";
+    EXPECT_NE(w[0].message.find("without stops: none is painted"), std::string::npos)
+        << w[0].text();
+}
+
 TEST(Pattern, ATileFilledWhollyPaintsAsItsColor) {
     // A tile its content covers wholly is its color everywhere: no seams,
     // whatever the tile's alignment to pixels.

@@ -51,6 +51,52 @@ TEST(XmlNamespaces, PrefixesAreScopedAndOtherNamespacesStayForeign) {
     EXPECT_EQ(shape_count(r.scene->root), 2) << "s:rect at the top, i:rect in the last group";
 }
 
+// A default namespace other than SVG's makes the unprefixed elements under
+// it foreign, an SVG prefix still SVG (the SVG 1.1 test suite's
+// struct-frag-05-t); before, the notsvg circle was drawn. An inner
+// declaration of SVG's default brings them back.
+TEST(XmlNamespaces, UnprefixedElementsUnderAnotherDefaultNamespaceAreForeign) {
+    const SvgResult r = parse_svg(
+        R"(<svg xmlns="http://www.w3.org/2000/svg" width="10" height="10">
+             <s:g xmlns="http://www.example.org/notsvg" xmlns:s="http://www.w3.org/2000/svg">
+               <s:circle r="2" fill="green"/><circle r="2" fill="red"/>
+               <g xmlns="http://www.w3.org/2000/svg"><rect width="1" height="1"/></g></s:g>
+             <g xmlns=""><rect width="1" height="1" fill="red"/></g></svg>)",
+        "e.svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    EXPECT_EQ(shape_count(r.scene->root), 2) << "s:circle and the inner rect";
+    const SvgResult foreign_root =
+        parse_svg(R"(<svg xmlns="urn:other" width="10" height="10"><rect/></svg>)", "f.svg");
+    EXPECT_FALSE(foreign_root.scene) << "no SVG root";
+    EXPECT_NE(foreign_root.error.find("f.svg:1: the root element is <svg>, not <svg> of the SVG"),
+              std::string::npos)
+        << foreign_root.error;
+    const SvgResult xhtml =
+        parse_svg("\n<html xmlns=\"http://www.w3.org/1999/xhtml\"><svg/></html>", "x.html");
+    EXPECT_NE(xhtml.error.find("x.html:2: the root element is <html>, not <svg>"),
+              std::string::npos)
+        << xhtml.error;
+}
+
+// A renamed element keeps its line and its name as written in warnings
+// (pugixml forgets a renamed node's offset: they were all at line 0), and
+// a prefixed root its prolog's xml-stylesheet links.
+TEST(XmlNamespaces, RenamedElementsKeepTheirLinesAndWrittenNames) {
+    const SvgResult r = parse_svg(
+        R"(<?xml-stylesheet href="data:text/css,rect{fill:blue}"?>
+<svg:svg xmlns:svg="http://www.w3.org/2000/svg" width="10" height="10">
+  <svg:rect width="5" height="5" rx="-1"/></svg:svg>)",
+        "g.svg");
+    ASSERT_TRUE(r.scene) << r.error;
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_EQ(r.warnings[0].line, 3);
+    EXPECT_EQ(r.warnings[0].element, "svg:rect");
+    const Shape& s = std::get<Shape>(r.scene->root.children.at(0).item);
+    EXPECT_EQ(s.source_line, 3);
+    ASSERT_TRUE(s.fill);
+    EXPECT_EQ(s.fill->color, (Rgba{0, 0, 1, 1})) << "the linked sheet applies";
+}
+
 // An attribute in the SVG namespace (svg:fill) is not the attribute fill:
 // SVG's are in no namespace, and browsers ignore it. Inkscape declares
 // xmlns:svg in every file; a comment's "xmlns:" does not stop the scan.

@@ -156,9 +156,13 @@ GradientRef GradientIndex::build(pugi::xml_node node) {
         for (const pugi::xml_node& s : n.children("stop")) g->stops.push_back(stop(s, g->stops));
         if (!g->stops.empty()) break;
     }
-    if (g->stops.empty())
-        r.warning = "gradient without stops: the fallback color (or none) is used";
-    else
+    // Zero stops paint as none, not as the fallback: the reference is to a
+    // paint server (SVG 1.1, 13.2.4: "as if 'none' were specified"; the 1.1
+    // test suite's pservers-grad-16-b, which browsers pass).
+    if (g->stops.empty()) {
+        r.warning = "gradient without stops: none is painted";
+        r.paints_none = true;
+    } else
         r.gradient = std::move(g);
     return r;
 }

@@ -198,7 +198,7 @@ void Reader::image(const pugi::xml_node& n, const StyleState& style, const Affin
     s.path = rect_path(placed.x0, placed.y0, placed.width(), placed.height(), 0, 0);
     s.transform = port;
     s.fill = Fill{{0, 0, 0, 1}, nullptr, 1, FillRule::NonZero, std::move(paint)};
-    s.source_line = line_of(n.offset_debug());
+    s.source_line = line_of(offset_of(n));
     out.children.push_back(Node{std::move(s)});
 }
 

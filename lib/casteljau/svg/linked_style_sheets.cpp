@@ -54,7 +54,7 @@ void Reader::linked_style_sheets(const pugi::xml_node& root) {
     // The prolog is the text before the root's start tag; read again as a
     // fragment, its processing instructions kept (the document was read
     // without them).
-    const std::size_t name_at = std::size_t(std::max<std::ptrdiff_t>(root.offset_debug(), 0));
+    const std::size_t name_at = std::size_t(std::max<std::ptrdiff_t>(offset_of(root), 0));
     const std::size_t end = text_.rfind('<', std::min(name_at, text_.size()));
     if (end == std::string_view::npos || text_.substr(0, end).find("<?") == std::string_view::npos)
         return;

@@ -30,7 +30,7 @@ Shape Reader::painted(const pugi::xml_node& n, Path path, const StyleState& styl
     s.path = std::move(path);
     s.transform = m;
     s.opacity = props.opacity;
-    s.source_line = line_of(n.offset_debug());
+    s.source_line = line_of(offset_of(n));
     s.stroke_first = style.paint_order[1] < style.paint_order[0];
     s.antialias = style.antialias;
     if (clip_mode_) { // a clip path's shape: an opaque fill with its clip-rule
@@ -142,6 +142,7 @@ std::optional<Reader::ResolvedPaint> Reader::paint(const pugi::xml_node& n, cons
                 const Rect b = path.bounds();
                 return !(b.width() > 0 && b.height() > 0);
             };
+            if (g.paints_none) return std::nullopt;
             if (g.gradient && !(g.gradient->object_bounding_box && flat()))
                 return ResolvedPaint{{}, g.gradient, nullptr};
         }

@@ -114,11 +114,13 @@ pugi::xml_node Reader::load() {
             if (n.type() == pugi::node_doctype && std::strstr(n.value(), "<!ENTITY"))
                 fail_at(n.offset_debug(), "<!DOCTYPE>: entity declarations are read in "
                                           "UTF-8 and ASCII-compatible documents only");
-    if (declares_own_prefixes(text_)) normalize_namespaces(doc_); // svg:svg, ns0:rect
+    if (declares_own_prefixes(text_)) renamed_ = normalize_namespaces(doc_); // svg:svg, ns0:rect
     const pugi::xml_node root = root_ = doc_.document_element();
-    if (std::strcmp(root.name(), "svg") != 0)
-        fail_at(root.offset_debug(),
-                std::string("the root element is <") + root.name() + ">, not <svg>");
+    if (std::strcmp(root.name(), "svg") != 0) {
+        const std::string written = written_name(root);
+        fail_at(offset_of(root), "the root element is <" + written + ">, not <svg>" +
+                                     (written == "svg" ? " of the SVG namespace" : ""));
+    }
     read_style_sheets(root);
     return root;
 }
@@ -624,6 +626,16 @@ std::optional<double> Reader::non_negative(const pugi::xml_node& n, const char* 
     return v ? v : 0.0;
 }
 
+// A radius that may be auto (rx, ry): a negative value is invalid and
+// ignored (SVG 2, 10.5: "must be ignored"), so the initial value, auto,
+// is used (nullopt), as browsers do (WPT's ellipse-006 and rect-007).
+std::optional<double> Reader::radius_or_auto(const pugi::xml_node& n, const char* attr,
+                                             std::optional<double> v) {
+    if (!v || *v >= 0) return v;
+    problem(n, std::string("attribute ") + attr + ": a negative value is invalid; auto is used");
+    return std::nullopt;
+}
+
 Path Reader::geometry(const pugi::xml_node& n, std::string_view name, const LengthContext& ctx) {
     if (name == "path") return path_data(n);
     if (name == "polyline" || name == "polygon") {
@@ -646,9 +658,9 @@ Path Reader::geometry(const pugi::xml_node& n, std::string_view name, const Leng
         const auto rw = non_negative(n, "width", len("width", w));
         const auto rh = non_negative(n, "height", len("height", h));
         // rx, ry: absent or auto (-1) take the other's value (9.2).
-        const auto rx = len("rx", w), ry = len("ry", h);
-        if (!rw || !rh || !non_negative(n, "rx", rx) || !non_negative(n, "ry", ry)) return {};
-        if (*rw == 0 || *rh == 0) return {};
+        const auto rx = radius_or_auto(n, "rx", len("rx", w));
+        const auto ry = radius_or_auto(n, "ry", len("ry", h));
+        if (!rw || !rh || *rw == 0 || *rh == 0) return {};
         return rect_path(at("x", w), at("y", h), *rw, *rh, rx.value_or(-1), ry.value_or(-1));
     }
     if (name == "circle") {
@@ -657,11 +669,10 @@ Path Reader::geometry(const pugi::xml_node& n, std::string_view name, const Leng
         return ellipse_path(at("cx", w), at("cy", h), *r, *r);
     }
     // ellipse: an absent or auto radius takes the other's (SVG 2, 10.4).
-    auto rx = len("rx", w), ry = len("ry", h);
+    auto rx = radius_or_auto(n, "rx", len("rx", w)), ry = radius_or_auto(n, "ry", len("ry", h));
     if (!rx) rx = ry;
     if (!ry) ry = rx;
-    if (!non_negative(n, "rx", rx) || !non_negative(n, "ry", ry) || !rx || *rx == 0 || *ry == 0)
-        return {};
+    if (!rx || *rx == 0 || *ry == 0) return {};
     return ellipse_path(at("cx", w), at("cy", h), *rx, *ry);
 }
 

@@ -38,6 +38,7 @@ namespace casteljau::svg_detail {
 struct GradientRef {
     std::shared_ptr<const Gradient> gradient; // null: not a gradient, or unusable
     std::string warning;                      // why, when null
+    bool paints_none = false;                 // a gradient without stops: none, not the fallback
     pugi::xml_node where;                     // the element the warning is about
 };
 

@@ -9,6 +9,7 @@
 #include "casteljau/svg/detail/css_pugi.h"
 #include "casteljau/svg/detail/gradients.h"
 #include "casteljau/svg/detail/href.h"
+#include "casteljau/svg/detail/xml_namespaces.h"
 #include "casteljau/svg/font_face.h"
 #include "casteljau/svg/marker_vertices.h"
 #include "casteljau/svg/reader.h"
@@ -118,8 +119,18 @@ class Reader {
                    newlines_.begin()) +
                1;
     }
+    // Where n starts in the text, and its name as written: a renamed
+    // element's (xml_namespaces.h) are those before the renaming.
+    std::ptrdiff_t offset_of(const pugi::xml_node& n) const {
+        const auto it = renamed_.find(n.internal_object());
+        return it == renamed_.end() ? n.offset_debug() : it->second.offset;
+    }
+    const char* written_name(const pugi::xml_node& n) const {
+        const auto it = renamed_.find(n.internal_object());
+        return it == renamed_.end() ? n.name() : it->second.written.c_str();
+    }
     SvgDiagnostic located(const pugi::xml_node& n, const std::string& what) const {
-        return {name_, line_of(n.offset_debug()), n.name(), what};
+        return {name_, line_of(offset_of(n)), written_name(n), what};
     }
     [[noreturn]] void fail(const pugi::xml_node& n, const std::string& what) const {
         throw Failure{located(n, what).text()};
@@ -378,6 +389,8 @@ class Reader {
                                            bool* boxless = nullptr);
     std::optional<double> non_negative(const pugi::xml_node& n, const char* attr,
                                        std::optional<double> v);
+    std::optional<double> radius_or_auto(const pugi::xml_node& n, const char* attr,
+                                         std::optional<double> v);
     Path geometry(const pugi::xml_node& n, std::string_view name, const LengthContext& ctx);
     // pathLength (svg/path_length.cpp).
     std::optional<double> path_length(const pugi::xml_node& n);
@@ -409,7 +422,8 @@ class Reader {
     double root_font_size_ = 16;
     double vw_ = 0, vh_ = 0; // viewport size in user units, for percentages
     std::optional<svg_detail::GradientIndex> gradients_;
-    pugi::xml_document doc_; // load()'s
+    pugi::xml_document doc_;  // load()'s
+    RenamedElements renamed_; // by normalize_namespaces
     pugi::xml_node root_;
     std::map<std::string, pugi::xml_node> ids_; // built at the first <use>
     std::vector<pugi::xml_node> instancing_;    // the <use> targets being drawn
