@@ -86,15 +86,71 @@ TEST(Gradient, AFocalRadiusStartsTheGradientOnItsCircle) {
     }
 }
 
-TEST(Gradient, FocalOutsideTheCircleIsMovedOntoIt) {
+// The t of a cone's point by brute force (SVG 2's radial gradient notes, as
+// canvas says it): of the circles c(w) = f + w (c - f), r(w) = fr + w (r -
+// fr) with r(w) >= 0 that pass through p, the one of the largest w, found
+// as the last sign change of |p - c(w)| - r(w) on a fine grid of w; NaN
+// where none does.
+double cone_reference(const Gradient& g, Point p) {
+    double found = NAN, prev = NAN;
+    constexpr int kSteps = 200000;
+    for (int k = 0; k <= kSteps; ++k) {
+        const double w = -20 + 40.0 * k / kSteps,
+                     r = g.focal_radius + w * (g.radius - g.focal_radius);
+        const Point c = g.focal + (g.center - g.focal) * w;
+        const double f = r >= 0 ? (p - c).length() - r : NAN;
+        if (!std::isnan(f) && !std::isnan(prev) && (f <= 0) != (prev <= 0)) found = w;
+        prev = f;
+    }
+    return found;
+}
+
+// A focal circle outside the end circle (or crossing it) makes a cone
+// (SVG 2; browsers, librsvg and resvg draw it): inside, the largest t whose
+// circle passes through the point; outside, no paint. SVG 1.1 moved the
+// focal point onto the circle, which this renderer did before.
+TEST(Gradient, CirclesThatDoNotNestSweepACone) {
+    testing::Rng rng(25);
+    int inside = 0, outside = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        Gradient g = two_stops(Gradient::Kind::Radial, Spread::Pad);
+        g.center = {0, 0}, g.radius = rng.uniform(5, 20);
+        g.focal_radius = trial % 2 ? rng.uniform(0, 10) : 0;
+        const double a = rng.uniform(0, 6.3);
+        const double dist = std::fabs(g.radius - g.focal_radius) + rng.uniform(0.5, 30);
+        g.focal = Point{0, 0} + Vec2{std::cos(a), std::sin(a)} * dist;
+        GradientShader sh;
+        ASSERT_TRUE(sh.prepare(g, Affine::identity(), 1));
+        for (int k = 0; k < 5; ++k) {
+            const Point p = rng.point(100) - Vec2{50, 50};
+            const double want = cone_reference(g, p), got = sh.parameter(p);
+            if (std::isnan(want)) {
+                ++outside;
+                EXPECT_TRUE(std::isnan(got)) << trial << ": " << p.x << "," << p.y << " " << got;
+            } else {
+                ++inside;
+                EXPECT_NEAR(got, std::clamp(want, 0.0, 1.0), 1e-3)
+                    << trial << ": " << p.x << "," << p.y;
+            }
+        }
+    }
+    EXPECT_GT(inside, 20);
+    EXPECT_GT(outside, 20);
+}
+
+// Outside the cone nothing is painted: a transparent pixel, and an opaque
+// gradient is not stored as opaque (store_opaque declines).
+TEST(Gradient, OutsideTheConeIsTransparent) {
     Gradient g = two_stops(Gradient::Kind::Radial, Spread::Pad);
-    g.center = {0, 0}, g.radius = 10, g.focal = {30, 0};
+    g.center = {50, 50}, g.radius = 10, g.focal = {90, 50};
     GradientShader sh;
     ASSERT_TRUE(sh.prepare(g, Affine::identity(), 1));
-    for (Point p : {Point{0, 0}, Point{50, 50}, Point{-9, 2}, Point{10, 0}}) {
-        const double t = sh.parameter(p);
-        EXPECT_TRUE(t >= 0 && t <= 1) << p.x << "," << p.y << ": " << t;
-    }
+    EXPECT_EQ(sh.at(95, 50).a, 0.0f) << "behind the focal point";
+    EXPECT_EQ(sh.at(50, 90).a, 0.0f) << "beside the cone";
+    EXPECT_EQ(sh.at(50, 50).a, 1.0f) << "inside the end circle";
+    EXPECT_EQ(sh.at(70, 50).a, 1.0f) << "between the circles";
+    Premul8 row[4];
+    EXPECT_FALSE(sh.store_opaque(0, 50, 4, row));
 }
 
 TEST(Gradient, StopsInterpolateUnpremultipliedAsSvgDoes) {

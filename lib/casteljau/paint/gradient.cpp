@@ -45,6 +45,28 @@ Rgba lerp(Rgba a, Rgba b, float t) {
     return t;
 }
 
+/// The t of a cone's point d from the start circle's centre (top of the
+/// file), or NaN outside the cone.
+inline double cone_parameter(const GradientShader::RadialForm& r, Vec2 d) {
+    const Vec2 e = r.center - r.focal;
+    const double a = e.length_sq() - r.dr * r.dr, b = d.dot(e) + r.r0 * r.dr;
+    const double c = d.length_sq() - r.r0 * r.r0;
+    const auto reached = [&](double t) { return r.r0 + t * r.dr >= 0; };
+    // |a| this small against the terms it is the difference of: the start
+    // circle touches the end one, and the quadratic is linear, -2 b t + c = 0.
+    if (std::fabs(a) <= 1e-12 * (e.length_sq() + r.dr * r.dr)) {
+        const double t = c / (2 * b);
+        return b != 0 && reached(t) ? t : NAN;
+    }
+    // A discriminant below zero by rounding only (a point on the cone's
+    // edge, where the root is double) is zero.
+    const double disc = b * b - a * c;
+    if (!(disc >= -1e-12 * (b * b + std::fabs(a * c)))) return NAN;
+    const double root = std::sqrt(std::max(disc, 0.0)), t1 = (b + root) / a, t2 = (b - root) / a;
+    const double hi = std::max(t1, t2), lo = std::min(t1, t2);
+    return reached(hi) ? hi : reached(lo) ? lo : NAN;
+}
+
 /// The parameter before spread at gradient-space point q (the formulas above);
 /// inlined by force into the radial loop of shade(), as it runs once a pixel.
 [[gnu::always_inline]] inline double raw_parameter(const Gradient& g,
@@ -55,6 +77,7 @@ Rgba lerp(Rgba a, Rgba b, float t) {
         return len_sq > 0 ? (q - g.p1).dot(axis) / len_sq : 1.0; // coincident points: the last stop
     }
     if (g.radius <= 0) return 1.0; // zero radius: the last stop (13.2.3)
+    if (r.cone) return cone_parameter(r, q - r.focal);
     const Vec2 d = q - r.focal, e = r.center - r.focal;
     const double a = e.length_sq() - r.dr * r.dr; // < 0: the start circle inside
     const double b = d.dot(e) + r.r0 * r.dr;
@@ -65,18 +88,21 @@ Rgba lerp(Rgba a, Rgba b, float t) {
 } // namespace
 
 GradientShader::RadialForm GradientShader::radial_form(const Gradient& g) {
+    const double fr = std::max(g.focal_radius, 0.0);
+    if ((g.center - g.focal).length() >= std::fabs(g.radius - fr)) // a cone (top of the file)
+        return RadialForm{g.focal, g.center, fr, g.radius - fr, 0, 1, true};
     // A start circle larger than the end circle is the same family of
     // circles run the other way (SVG 2, 14.3.4's larger t over smaller t,
     // with one circle holding the other): swapped, and t read as 1 - t.
-    RadialForm r{g.focal, g.center, std::max(g.focal_radius, 0.0), g.radius, 0, 1};
+    RadialForm r{g.focal, g.center, fr, g.radius, 0, 1};
     double r1 = g.radius;
     if (r.r0 > r1) {
         std::swap(r.focal, r.center), std::swap(r.r0, r1);
         r.t0 = 1, r.t1 = -1;
     }
-    // 13.2.3: a focal point outside the circle moves onto it; 0.999 keeps
-    // the start circle inside, so that the quadratic has its single root on
-    // a circle of positive radius (top of the file).
+    // A start circle within a thousandth of the end circle's edge moves
+    // that far inside, so that the quadratic has its single root on a
+    // circle of positive radius, well conditioned (top of the file).
     r.r0 = std::min(r.r0, 0.999 * r1), r.dr = r1 - r.r0;
     const Vec2 e = r.focal - r.center;
     const double limit = 0.999 * r.dr;
@@ -101,7 +127,7 @@ bool GradientShader::prepare(const Gradient& g, const Affine& to_device, float o
                                       (m.c * axis.x + m.d * axis.y) / len_sq,
                                       ((m.e - g.p1.x) * axis.x + (m.f - g.p1.y) * axis.y) / len_sq}
                          : LinearForm{0, 0, 1};
-    if (g.kind == Gradient::Kind::Radial) radial_ = radial_form(g);
+    radial_ = g.kind == Gradient::Kind::Radial ? radial_form(g) : RadialForm{};
     // The table depends on the stops, the opacity and the space only: a
     // shader asked for the same ones again (the next band, or the next shape
     // sharing the gradient) keeps its table.
@@ -349,8 +375,23 @@ void GradientShader::shade_radial(int x, int y, int n, const P* lut, P* out) con
 }
 
 template <Spread S, class P>
+void GradientShader::shade_cone(int x, int y, int n, const P* lut, P* out) const {
+    // A pixel at a time: cones are rare (a focal point outside the circle),
+    // and a pixel outside the cone is transparent, not a table entry.
+    const Affine& m = inverse_;
+    const double cy = y + 0.5;
+    const Vec2 row{m.c * cy + m.e - radial_.focal.x, m.d * cy + m.f - radial_.focal.y};
+    for (int i = 0; i < n; ++i) {
+        const double cx = x + i + 0.5;
+        const double t = cone_parameter(radial_, {m.a * cx + row.x, m.b * cx + row.y});
+        out[i] = std::isnan(t) ? P{} : lut[entry(spread(t, S))];
+    }
+}
+
+template <Spread S, class P>
 void GradientShader::shade_spread(int x, int y, int n, const P* lut, P* out) const {
     if (g_->kind == Gradient::Kind::Linear) return shade_linear<S>(x, y, n, lut, out);
+    if (radial_.cone && g_->radius > 0) return shade_cone<S>(x, y, n, lut, out);
     if (radial_.r0 > 0 || radial_.t1 != 1) return shade_radial<S, true>(x, y, n, lut, out);
     shade_radial<S, false>(x, y, n, lut, out);
 }
@@ -372,7 +413,7 @@ void GradientShader::shade(int x, int y, int n, Premul* out) const {
 }
 
 bool GradientShader::store_opaque(int x, int y, int n, Premul8* out) const {
-    if (!lut_opaque_) return false;
+    if (!lut_opaque_ || radial_.cone) return false; // a cone leaves pixels transparent
     shade_from(x, y, n, lut8_.data(), out);
     return true;
 }

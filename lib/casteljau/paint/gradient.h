@@ -16,12 +16,21 @@
 //           exactly one of those circles:
 //           t = (b - sqrt(b^2 - a (d.d - r0^2))) / a, b = d.e + r0 dr.
 // then spread (13.2.4): pad clamps t to [0, 1], repeat takes t - floor(t),
-// reflect folds t with period 2. A focal point outside the end circle is moved
-// onto it (SVG 1.1, 13.2.3), and then just inside, where the root above stays
-// defined; so is the start circle (its centre within r - fr of the end
-// circle's). A start circle larger than the end circle holds it instead: the
-// same circles, run from the other end. SVG 2's cones, where neither circle
-// holds the other, are not drawn: the smaller circle is moved inside.
+// reflect folds t with period 2. A start circle inside the end circle but
+// within a thousandth of its edge is moved that far inside, where the root
+// above stays well conditioned. A start circle larger than the end circle
+// holds it instead: the same circles, run from the other end.
+//
+// Cones (SVG 2's notes on radial gradients, pservers.html#RadialGradientNotes;
+// what browsers draw, as canvas's createRadialGradient does): where neither
+// circle holds the other (a focal point outside the end circle, say), the
+// circles' family sweeps a cone. A point gets the largest t whose circle
+// passes through it with a radius >= 0: the larger root of the quadratic
+// above if its radius is not negative, else the smaller one's; where neither
+// (no real root, or both radii negative), the point is outside the cone and
+// stays transparent. With a = 0 (the start circle touching the end circle
+// from inside) the equation is linear. SVG 1.1 moved such a focal point onto
+// the circle instead (13.2.3).
 //
 // Colors between stops are interpolated unpremultiplied (SVG 2, 13.2.4's stop
 // colors; browsers, librsvg and resvg interpolate straight colors) in
@@ -76,6 +85,7 @@ class GradientShader {
         Point focal, center;   ///< the start and the end circle's centres
         double r0 = 0, dr = 0; ///< the start circle's radius, and r - r0
         double t0 = 0, t1 = 1; ///< (1, -1) when swapped
+        bool cone = false;     ///< neither circle holds the other (top of the file)
     };
     /// The circles of radial gradient g as drawn.
     static RadialForm radial_form(const Gradient& g);
@@ -95,7 +105,8 @@ class GradientShader {
     /// was there (round(255 S + 0 D): the table quantized), and returns
     /// true; else writes nothing and returns false (ShadedSpanPainter).
     bool store_opaque(int x, int y, int n, Premul8* out) const;
-    /// The gradient parameter after spread, in [0, 1], at device point p.
+    /// The gradient parameter after spread, in [0, 1], at device point p;
+    /// NaN outside a radial gradient's cone (top of the file).
     double parameter(Point p) const;
 
   private:
@@ -110,6 +121,8 @@ class GradientShader {
     void shade_linear(int x, int y, int n, const P* lut, P* out) const;
     template <Spread S, bool Ring, class P>
     void shade_radial(int x, int y, int n, const P* lut, P* out) const;
+    template <Spread S, class P>
+    void shade_cone(int x, int y, int n, const P* lut, P* out) const;
     template <Spread S, class P>
     void shade_spread(int x, int y, int n, const P* lut, P* out) const;
     template <class P>
