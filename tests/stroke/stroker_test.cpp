@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -476,6 +477,40 @@ TEST(Stroker, ZeroLengthSubpaths) {
     EXPECT_NEAR(std::fabs(area(round[0])), std::numbers::pi * 25, 0.2);
     EXPECT_NEAR(std::fabs(area(square[0])), 100, 1e-12);
     EXPECT_TRUE(butt.empty());
+}
+
+// Zero-length dashes are dots (SVG 2: each draws its caps), at a subpath's
+// start and end as well as between: resvg's stroke-dasharray 0-n tests.
+// Before, the dot at the start was skipped and the one at the end never
+// reached (a line 120 long dashed "0 40" had 2 dots of 4).
+TEST(Stroker, ZeroLengthDashesAreDotsAtBothEnds) {
+    StrokeGeometry s = style(10, LineCap::Round);
+    s.dashes = {0, 40};
+    const auto centres = [&](const char* d) {
+        std::vector<Polygon> out;
+        stroke_outline(parse(d), s, 0.01, out);
+        std::set<std::pair<long, long>> at;
+        for (const Polygon& p : out) {
+            const Rect b = bounds_of({p});
+            EXPECT_NEAR(b.width(), 10, 0.01);
+            at.insert({std::lround((b.x0 + b.x1) / 2), std::lround((b.y0 + b.y1) / 2)});
+        }
+        return at;
+    };
+    EXPECT_EQ(centres("M0 0 H120"),
+              (std::set<std::pair<long, long>>{{0, 0}, {40, 0}, {80, 0}, {120, 0}}));
+    // A closed square of side 80: dots every 40 round it, its start too.
+    EXPECT_EQ(centres("M0 0 H80 V80 H0 Z").size(), 8u);
+    // A dash that ends where the path ends is no dot: 10 on, 5 off over 25.
+    s.dashes = {10, 5};
+    std::vector<Polygon> out;
+    stroke_outline(parse("M0 0 H25"), s, 0.01, out);
+    EXPECT_EQ(out.size(), 2u);
+    // Nor is one that ends where the path starts (an offset of a whole dash).
+    s.dash_offset = 10;
+    out.clear();
+    stroke_outline(parse("M0 0 H25"), s, 0.01, out);
+    EXPECT_EQ(out.size(), 2u) << "a gap, then dashes at 5 and 20";
 }
 
 TEST(Stroker, DegenerateAndCoincidentSegments) {

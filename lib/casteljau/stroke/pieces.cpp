@@ -46,9 +46,24 @@ struct DashCursor {
         consume(std::fmod(len, period));
     }
 
+    // Whether a zero-length dash (0 in the array: a dot with round or square
+    // caps) starts where the walk stands: the walk passes a boundary only when
+    // it goes beyond it, so a dot at a subpath's end is found here.
+    bool at_dot() {
+        for (std::size_t turns = 0; remaining == 0 && turns <= pattern.size(); ++turns) {
+            if (in_dash() && pattern[k] == 0) return true;
+            next();
+        }
+        return false;
+    }
+
   private:
+    // Moves `len` along. A boundary exactly at `len` is passed unless a
+    // zero-length dash starts there: that dash stays current, so that a dot
+    // at a subpath's start is drawn (SVG 2 draws every zero-length dash's
+    // caps; a dash ending there has none).
     void consume(double len) { // len < period: ends within one turn of the pattern
-        while (len >= remaining) len -= remaining, next();
+        while (len > remaining || (len == remaining && remaining > 0)) len -= remaining, next();
         remaining -= len;
     }
 };
@@ -146,6 +161,10 @@ void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
             if (dash.in_dash() && t_from < 1) emit(seg, t_from, 1.0);
         }
         if (sp.closed && open && from_start) out.rejoin(first); // a dash through the start
+        if (!sp.segments.empty() && dash.at_dot()) {            // a dot at the subpath's end
+            open = false;
+            emit(sp.segments.back(), 1.0, 1.0);
+        }
     }
 }
 
