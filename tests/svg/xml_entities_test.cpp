@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 #include <string>
+#include <variant>
 
 namespace casteljau {
 namespace {
@@ -72,18 +73,20 @@ TEST(XmlEntities, AttributeValuesCharacterReferencesAndThePredefinedFive) {
     EXPECT_TRUE(r.scene) << r.error; // was "malformed XML": the quote ended the value
 }
 
-// A DOCTYPE the expansion cannot read is not read without its entities:
-// in UTF-16 the file is refused, as it was before entities were expanded;
-// a malformed one is pugixml's to report.
-TEST(XmlEntities, AnUnreadableDoctypeIsNotSkipped) {
+// A document in UTF-16 is decoded before its entities are expanded
+// (svg/xml_encoding.h), so they are, as in UTF-8 (before, the file was
+// refused); a malformed DOCTYPE is pugixml's to report.
+TEST(XmlEntities, UTF16DocumentsHaveTheirEntitiesExpanded) {
     const std::string utf8 = "<!DOCTYPE svg [<!ENTITY st0 'fill:#0F0;'>]><svg xmlns="
                              "'http://www.w3.org/2000/svg' width='9' height='9'><rect width='5' "
                              "height='5' style='&st0;'/></svg>";
     std::string utf16 = "\xFF\xFE"; // little-endian, with its byte order mark
     for (const char c : utf8) utf16 += std::string{c, '\0'};
     const SvgResult r = parse_svg(utf16, "u.svg");
-    EXPECT_EQ(r.error, "u.svg:1: <!DOCTYPE>: entity declarations are read in UTF-8 and "
-                       "ASCII-compatible documents only");
+    ASSERT_TRUE(r.scene) << r.error;
+    const Shape& s = std::get<Shape>(r.scene->root.children.at(0).item);
+    ASSERT_TRUE(s.fill);
+    EXPECT_EQ(s.fill->color, (Rgba{0, 1, 0, 1}));
     EXPECT_TRUE(parse_svg(utf8, "u.svg").scene);
     const SvgResult broken = parse_svg("<!DOCTYPE svg [<!ENTITY a \"&a;\"><svg/>", "b.svg");
     EXPECT_NE(broken.error.find("malformed XML"), std::string::npos) << broken.error;

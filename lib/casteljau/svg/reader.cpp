@@ -13,6 +13,7 @@
 #include "casteljau/svg/shapes.h"
 #include "casteljau/svg/transform_list.h"
 #include "casteljau/svg/viewport.h"
+#include "casteljau/svg/xml_encoding.h"
 #include "casteljau/svg/xml_entities.h"
 
 #include <cmath>
@@ -98,6 +99,14 @@ std::optional<double> Reader::length(const pugi::xml_node& n, const char* attr, 
 // Parses the text and reads its style sheets: what drawing any of its
 // elements needs (read(), and a document a <use> draws from, external_use.cpp).
 pugi::xml_node Reader::load() {
+    // Decoded to UTF-8 first (svg/xml_encoding.h): at most 3 bytes a byte.
+    DecodedDocument decoded = decode_document(text_, 3 * text_.size() + 16);
+    if (!decoded.error.empty()) fail_at(0, decoded.error);
+    if (!decoded.warning.empty()) problem_at({name_, 1, "?xml", decoded.warning});
+    if (decoded.changed) {
+        decoded_ = std::move(decoded.text);
+        set_text(decoded_);
+    }
     EntityExpansion entities = expand_entities(text_, options_.max_entity_bytes);
     if (!entities.error.empty()) fail_at(std::ptrdiff_t(entities.offset), entities.error);
     if (entities.changed) {
@@ -109,11 +118,12 @@ pugi::xml_node Reader::load() {
         doc_.load_buffer(text_.data(), text_.size(),
                          pugi::parse_default | pugi::parse_doctype | pugi::parse_ws_pcdata);
     if (!res) fail_at(res.offset, std::string("malformed XML: ") + res.description());
-    if (!entities.doctype) // a DOCTYPE the expansion could not read (UTF-16)
+    // A DOCTYPE the expansion did not find, which pugixml did: its entities
+    // would go unexpanded (the text is UTF-8 by now, so a guard).
+    if (!entities.doctype)
         for (const pugi::xml_node& n : doc_.children())
             if (n.type() == pugi::node_doctype && std::strstr(n.value(), "<!ENTITY"))
-                fail_at(n.offset_debug(), "<!DOCTYPE>: entity declarations are read in "
-                                          "UTF-8 and ASCII-compatible documents only");
+                fail_at(n.offset_debug(), "<!DOCTYPE>: its entity declarations could not be read");
     if (declares_own_prefixes(text_)) renamed_ = normalize_namespaces(doc_); // svg:svg, ns0:rect
     const pugi::xml_node root = root_ = doc_.document_element();
     if (std::strcmp(root.name(), "svg") != 0) {

@@ -411,6 +411,7 @@ class Reader {
                     (text[i + 2] | 0x20) == 'r' && text[i + 3] == '(';
     }
     std::string_view text_;
+    std::string decoded_;  // the text in UTF-8, when it was in another encoding
     std::string expanded_; // the text, when entities were expanded
     std::string name_;
     SvgOptions options_;
