@@ -153,6 +153,30 @@ TEST(Gradient, OutsideTheConeIsTransparent) {
     EXPECT_FALSE(sh.store_opaque(0, 50, 4, row));
 }
 
+// A focal point on the circle is a cone whichever way rounding puts it:
+// 0.4 - 0.1 rounds above 0.3 and 0.4 - 0.7 below, and the two mirror
+// images were drawn one as a cone, one as a clamped focus (the review's
+// r1.svg). Circles 1e300 wide are measured without overflow (were NaN).
+TEST(Gradient, ConesAreDecidedAboveRoundingAndMeasuredWithoutOverflow) {
+    GradientShader left, right;
+    Gradient a = two_stops(Gradient::Kind::Radial, Spread::Pad), b = a;
+    a.center = {0.4, 0.5}, a.radius = 0.3, a.focal = {0.1, 0.5};
+    b.center = {0.4, 0.5}, b.radius = 0.3, b.focal = {0.7, 0.5};
+    ASSERT_TRUE(left.prepare(a, Affine::scale(100, 100), 1));
+    ASSERT_TRUE(right.prepare(b, Affine::scale(100, 100), 1));
+    for (int y : {10, 37, 50})
+        for (int x = 0; x < 80; ++x) {
+            const Premul p = left.at(x, y), q = right.at(79 - x, y);
+            EXPECT_NEAR(p.a, q.a, 1e-6) << x << "," << y;
+            EXPECT_NEAR(p.r, q.r, 2e-3) << x << "," << y;
+        }
+    Gradient huge = two_stops(Gradient::Kind::Radial, Spread::Pad);
+    huge.center = {1e300, 0}, huge.radius = 1e300, huge.focal = {-1e300, 0};
+    GradientShader sh;
+    ASSERT_TRUE(sh.prepare(huge, Affine::identity(), 1));
+    EXPECT_EQ(sh.at(150, 0).a, 1.0f) << "inside the end circle, near its edge";
+}
+
 TEST(Gradient, StopsInterpolateUnpremultipliedAsSvgDoes) {
     // Opaque red to transparent blue: half way, the straight color is purple
     // (0.5, 0, 0.5) at alpha 0.5, as browsers and librsvg draw SVG gradients;

@@ -513,6 +513,33 @@ TEST(Stroker, ZeroLengthDashesAreDotsAtBothEnds) {
     EXPECT_EQ(out.size(), 2u) << "a gap, then dashes at 5 and 20";
 }
 
+// A dot turns as a stroke's outline turns, so that where one overlaps a
+// stroke the nonzero windings add up (the reviewer's "M20 20 H60 M60 20
+// L60 20": the dot cut a crescent out of the round cap, and a dash "40 0 0
+// 100" the same at the dash's end; square caps lost their square).
+TEST(Stroker, ADotOverAStrokeAddsToIt) {
+    for (const LineCap cap : {LineCap::Round, LineCap::Square}) {
+        std::vector<Polygon> line, dot;
+        stroke_outline(parse("M20 20 H60"), style(20, cap), 0.01, line);
+        stroke_outline(parse("M60 20 L60 20"), style(20, cap), 0.01, dot);
+        ASSERT_EQ(line.size(), 1u);
+        ASSERT_EQ(dot.size(), 1u);
+        EXPECT_GT(area(line[0]) * area(dot[0]), 0) << "the same turn";
+        std::vector<Polygon> both;
+        stroke_outline(parse("M20 20 H60 M60 20 L60 20"), style(20, cap), 0.01, both);
+        const testing::CoverageImage c = cover(both, 80, 40);
+        for (const int x : {55, 62, 66})
+            EXPECT_NEAR(c.at(x, 20), 1.0f, 1e-6f) << x << " " << int(cap);
+        StrokeGeometry dashed = style(20, cap);
+        dashed.dashes = {40, 0, 0, 100};
+        std::vector<Polygon> dash;
+        stroke_outline(parse("M20 20 H60"), dashed, 0.01, dash);
+        const testing::CoverageImage d = cover(dash, 80, 40);
+        for (const int x : {55, 62, 66})
+            EXPECT_NEAR(d.at(x, 20), 1.0f, 1e-6f) << x << " " << int(cap);
+    }
+}
+
 TEST(Stroker, DegenerateAndCoincidentSegments) {
     // A zero-length segment in the middle changes nothing.
     std::vector<Polygon> plain, with_dot;

@@ -43,6 +43,35 @@ TEST(XmlEncoding, LabelsAreTheEncodingStandards) {
     EXPECT_EQ(gb.text, declared("UTF-8", "中")) << "GB2312 is read as GBK";
 }
 
+// Only the standard's labels choose a decoder: UTF-16's on a text that is
+// not UTF-16 read as UTF-8 (before the review, "UCS-2" made iconv refuse
+// the file as UCS-2), one the standard lacks is a warning (EBCDIC's IBM037
+// made an unreadable file).
+TEST(XmlEncoding, OnlyTheStandardsLabelsChooseADecoder) {
+    for (const char* label : {"UCS-2", "unicode", "utf-16"}) {
+        const DecodedDocument d = decode_document(declared(label, "caf\xC3\xA9"), kLimit);
+        EXPECT_FALSE(d.changed) << label;
+        EXPECT_EQ(d.warning, "") << label;
+    }
+    const DecodedDocument ebcdic = decode_document(declared("IBM037", "\xC3\xA9"), kLimit);
+    EXPECT_FALSE(ebcdic.changed);
+    EXPECT_NE(ebcdic.warning.find("'IBM037' is not known"), std::string::npos);
+    EXPECT_EQ(decode_document(declared("shift-jis", kShiftJis), kLimit).text,
+              declared("UTF-8", "日本語"));
+}
+
+// The declaration's pseudo-attributes are read in order: "encoding" within
+// the version's value is not the encoding.
+TEST(XmlEncoding, TheLabelIsTheEncodingPseudoAttributes) {
+    EXPECT_FALSE(
+        decode_document("<?xml version=\"encoding='windows-1251'\"?>\n\xD0\x9F", kLimit).changed);
+    EXPECT_FALSE(decode_document("<?xml encoding=\"windows-1251\n<svg>\xCF</svg>", kLimit).changed)
+        << "an unclosed value";
+    EXPECT_TRUE(
+        decode_document("<?xml version='1.0'  encoding = 'windows-1251' ?><a>\xCF</a>", kLimit)
+            .changed);
+}
+
 TEST(XmlEncoding, Utf8AndPlainAsciiAreLeftAsTheyAre) {
     for (const std::string& doc :
          {std::string("<svg/>"), declared("UTF-8", "Привет"), declared("utf8", "<svg/>"),
@@ -60,6 +89,12 @@ TEST(XmlEncoding, WideEncodingsAreFoundByTheirFirstBytes) {
     }
     for (const std::string& doc : {le, be, bare, wide})
         EXPECT_EQ(decode_document(doc, kLimit).text, declared("UTF-8", "<svg/>"));
+    // Without a declaration or a mark: '<' and a character, as pugixml finds it.
+    std::string svg_le, svg_be;
+    for (const char c : std::string("<svg/>"))
+        svg_le += std::string{c, '\0'}, svg_be += std::string{'\0', c};
+    EXPECT_EQ(decode_document(svg_le, kLimit).text, "<svg/>");
+    EXPECT_EQ(decode_document(svg_be, kLimit).text, "<svg/>");
 }
 
 // A byte sequence the encoding lacks is U+FFFD, and the rest is read on.

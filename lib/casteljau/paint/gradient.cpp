@@ -48,13 +48,20 @@ Rgba lerp(Rgba a, Rgba b, float t) {
 /// The t of a cone's point d from the start circle's centre (top of the
 /// file), or NaN outside the cone.
 inline double cone_parameter(const GradientShader::RadialForm& r, Vec2 d) {
-    const Vec2 e = r.center - r.focal;
-    const double a = e.length_sq() - r.dr * r.dr, b = d.dot(e) + r.r0 * r.dr;
-    const double c = d.length_sq() - r.r0 * r.r0;
-    const auto reached = [&](double t) { return r.r0 + t * r.dr >= 0; };
+    // In units of the circles' size (t does not change), so that no square
+    // overflows where the circles reach 1e300.
+    const Vec2 to_end = r.center - r.focal;
+    const double k = 1 / std::max({std::fabs(to_end.x), std::fabs(to_end.y), std::fabs(r.r0),
+                                   std::fabs(r.r0 + r.dr)});
+    const Vec2 e = to_end * k;
+    d = d * k;
+    const double r0 = r.r0 * k, dr = r.dr * k;
+    const double a = e.length_sq() - dr * dr, b = d.dot(e) + r0 * dr;
+    const double c = d.length_sq() - r0 * r0;
+    const auto reached = [&](double t) { return r0 + t * dr >= 0; };
     // |a| this small against the terms it is the difference of: the start
     // circle touches the end one, and the quadratic is linear, -2 b t + c = 0.
-    if (std::fabs(a) <= 1e-12 * (e.length_sq() + r.dr * r.dr)) {
+    if (std::fabs(a) <= 1e-12 * (e.length_sq() + dr * dr)) {
         const double t = c / (2 * b);
         return b != 0 && reached(t) ? t : NAN;
     }
@@ -88,8 +95,11 @@ inline double cone_parameter(const GradientShader::RadialForm& r, Vec2 d) {
 } // namespace
 
 GradientShader::RadialForm GradientShader::radial_form(const Gradient& g) {
+    // A cone (top of the file) where the start circle is not inside the end
+    // circle by more than rounding: a focal point on the circle, as 0.4 - 0.1
+    // and 0.7 - 0.4 put it, is one either side (the linear case).
     const double fr = std::max(g.focal_radius, 0.0);
-    if ((g.center - g.focal).length() >= std::fabs(g.radius - fr)) // a cone (top of the file)
+    if ((g.center - g.focal).length() >= std::fabs(g.radius - fr) * (1 - 1e-12))
         return RadialForm{g.focal, g.center, fr, g.radius - fr, 0, 1, true};
     // A start circle larger than the end circle is the same family of
     // circles run the other way (SVG 2, 14.3.4's larger t over smaller t,

@@ -350,14 +350,17 @@ class Outline {
         }
     }
 
+    // Both turn as an open subpath's outline turns (its caps sweep -pi), so
+    // that where a dot overlaps a stroke the windings add up, not cancel
+    // (a dot at a dash's end cut a hole in its cap).
     void zero_length(Point p) const {
         if (st_.cap == LineCap::Round) {
             Polygon& disc = b_.polygons[b_.new_polygon()];
             disc.push_back(p + Vec2{h_, 0});
-            arc(disc, p, {1, 0}, 2 * kPi);
+            arc(disc, p, {1, 0}, -2 * kPi);
         } else if (st_.cap == LineCap::Square) {
             Polygon& square = b_.polygons[b_.new_polygon()];
-            for (const Vec2 v : {Vec2{-h_, -h_}, Vec2{h_, -h_}, Vec2{h_, h_}, Vec2{-h_, h_}})
+            for (const Vec2 v : {Vec2{-h_, -h_}, Vec2{-h_, h_}, Vec2{h_, h_}, Vec2{h_, -h_}})
                 square.push_back(p + v);
         }
     }

@@ -12,54 +12,122 @@ namespace casteljau {
 namespace {
 
 // Where the XML declaration's encoding label stands in `text`, or npos: the
-// declaration is the text's very start (XML 1.0, 2.8), and its pseudo-
-// attributes are ASCII.
+// declaration is the text's very start, its pseudo-attributes in order,
+// version, encoding, standalone (XML 1.0, 2.8 and 4.3.3), all ASCII.
 struct Span {
     std::size_t pos = std::string_view::npos, len = 0;
 };
 Span declared_label(std::string_view text) {
     using svg_detail::is_xml_space;
     if (!text.starts_with("<?xml") || text.size() < 6 || !is_xml_space(text[5])) return {};
-    const std::string_view decl = text.substr(0, text.find("?>"));
-    std::size_t k = decl.find("encoding");
-    if (k == std::string_view::npos) return {};
-    k += 8;
-    while (k < decl.size() && is_xml_space(decl[k])) ++k;
-    if (k >= decl.size() || decl[k] != '=') return {};
-    ++k;
-    while (k < decl.size() && is_xml_space(decl[k])) ++k;
-    if (k >= decl.size() || (decl[k] != '"' && decl[k] != '\'')) return {};
-    const std::size_t end = decl.find(decl[k], k + 1);
-    if (end == std::string_view::npos) return {};
-    return {k + 1, end - k - 1};
+    std::size_t k = 5;
+    while (true) {
+        const std::size_t before = k;
+        while (k < text.size() && is_xml_space(text[k])) ++k;
+        const std::size_t name = k;
+        while (k < text.size() && ((text[k] | 0x20) >= 'a' && (text[k] | 0x20) <= 'z')) ++k;
+        if (k == name || k == before) return {}; // "?>", or no space before a name
+        const std::string_view attr = text.substr(name, k - name);
+        while (k < text.size() && is_xml_space(text[k])) ++k;
+        if (k >= text.size() || text[k] != '=') return {};
+        ++k;
+        while (k < text.size() && is_xml_space(text[k])) ++k;
+        if (k >= text.size() || (text[k] != '"' && text[k] != '\'')) return {};
+        const std::size_t end = text.find(text[k], k + 1);
+        if (end == std::string_view::npos || text.substr(k, end - k).find('>') != text.npos)
+            return {};
+        if (attr == "encoding") return {k + 1, end - k - 1};
+        k = end + 1;
+    }
 }
 
-// The decoder browsers use for a label (the WHATWG Encoding Standard, 4.2:
-// its labels of a few encodings, as iconv names them), "" for UTF-8, or the
-// label itself for iconv to know or not.
-std::string decoder_for(std::string label) {
-    std::transform(label.begin(), label.end(), label.begin(),
+// The Encoding Standard's labels (WHATWG, 4.2) and the decoder each names,
+// as iconv names it ("" for UTF-8). A label not here is not decoded, what
+// iconv may know aside: the file does not choose among the C library's
+// converters. UTF-16's labels on a text that is not UTF-16 (no zero bytes,
+// checked first) read as UTF-8, as the standard's decoding does. GBK is
+// read as GB18030, which the standard's GBK decoder is.
+struct Decoder {
+    const char* name;
+    std::initializer_list<std::string_view> labels;
+};
+const Decoder kDecoders[] = {
+    {"",
+     {"unicode-1-1-utf-8", "unicode11utf8", "unicode20utf8", "utf-8", "utf8", "x-unicode20utf8",
+      "csunicode", "iso-10646-ucs-2", "ucs-2", "unicode", "unicodefeff", "utf-16", "utf-16le",
+      "unicodefffe", "utf-16be"}},
+    {"IBM866", {"866", "cp866", "csibm866", "ibm866"}},
+    {"ISO-8859-2",
+     {"csisolatin2", "iso-8859-2", "iso-ir-101", "iso8859-2", "iso88592", "iso_8859-2",
+      "iso_8859-2:1987", "l2", "latin2"}},
+    {"ISO-8859-3",
+     {"csisolatin3", "iso-8859-3", "iso-ir-109", "iso8859-3", "iso88593", "iso_8859-3",
+      "iso_8859-3:1988", "l3", "latin3"}},
+    {"ISO-8859-4",
+     {"csisolatin4", "iso-8859-4", "iso-ir-110", "iso8859-4", "iso88594", "iso_8859-4",
+      "iso_8859-4:1988", "l4", "latin4"}},
+    {"ISO-8859-5",
+     {"csisolatincyrillic", "cyrillic", "iso-8859-5", "iso-ir-144", "iso8859-5", "iso88595",
+      "iso_8859-5", "iso_8859-5:1988"}},
+    {"ISO-8859-6",
+     {"arabic", "asmo-708", "csiso88596e", "csiso88596i", "csisolatinarabic", "ecma-114",
+      "iso-8859-6", "iso-8859-6-e", "iso-8859-6-i", "iso-ir-127", "iso8859-6", "iso88596",
+      "iso_8859-6", "iso_8859-6:1987"}},
+    {"ISO-8859-7",
+     {"csisolatingreek", "ecma-118", "elot_928", "greek", "greek8", "iso-8859-7", "iso-ir-126",
+      "iso8859-7", "iso88597", "iso_8859-7", "iso_8859-7:1987", "sun_eu_greek"}},
+    {"ISO-8859-8",
+     {"csiso88598e", "csisolatinhebrew", "hebrew", "iso-8859-8", "iso-8859-8-e", "iso-ir-138",
+      "iso8859-8", "iso88598", "iso_8859-8", "iso_8859-8:1988", "visual", "csiso88598i",
+      "iso-8859-8-i", "logical"}},
+    {"ISO-8859-10",
+     {"csisolatin6", "iso-8859-10", "iso-ir-157", "iso8859-10", "iso885910", "l6", "latin6"}},
+    {"ISO-8859-13", {"iso-8859-13", "iso8859-13", "iso885913"}},
+    {"ISO-8859-14", {"iso-8859-14", "iso8859-14", "iso885914"}},
+    {"ISO-8859-15", {"csisolatin9", "iso-8859-15", "iso8859-15", "iso885915", "iso_8859-15", "l9"}},
+    {"ISO-8859-16", {"iso-8859-16"}},
+    {"KOI8-R", {"cskoi8r", "koi", "koi8", "koi8-r", "koi8_r"}},
+    {"KOI8-U", {"koi8-ru", "koi8-u"}},
+    {"MACINTOSH", {"csmacintosh", "mac", "macintosh", "x-mac-roman"}},
+    {"WINDOWS-874",
+     {"dos-874", "iso-8859-11", "iso8859-11", "iso885911", "tis-620", "windows-874"}},
+    {"WINDOWS-1250", {"cp1250", "windows-1250", "x-cp1250"}},
+    {"WINDOWS-1251", {"cp1251", "windows-1251", "x-cp1251"}},
+    {"WINDOWS-1252",
+     {"ansi_x3.4-1968", "ascii", "cp1252", "cp819", "csisolatin1", "ibm819", "iso-8859-1",
+      "iso-ir-100", "iso8859-1", "iso88591", "iso_8859-1", "iso_8859-1:1987", "l1", "latin1",
+      "us-ascii", "windows-1252", "x-cp1252"}},
+    {"WINDOWS-1253", {"cp1253", "windows-1253", "x-cp1253"}},
+    {"WINDOWS-1254",
+     {"cp1254", "csisolatin5", "iso-8859-9", "iso-ir-148", "iso8859-9", "iso88599", "iso_8859-9",
+      "iso_8859-9:1989", "l5", "latin5", "windows-1254", "x-cp1254"}},
+    {"WINDOWS-1255", {"cp1255", "windows-1255", "x-cp1255"}},
+    {"WINDOWS-1256", {"cp1256", "windows-1256", "x-cp1256"}},
+    {"WINDOWS-1257", {"cp1257", "windows-1257", "x-cp1257"}},
+    {"WINDOWS-1258", {"cp1258", "windows-1258", "x-cp1258"}},
+    {"MAC-CYRILLIC", {"x-mac-cyrillic", "x-mac-ukrainian"}},
+    {"GB18030",
+     {"chinese", "csgb2312", "csiso58gb231280", "gb2312", "gb_2312", "gb_2312-80", "gbk",
+      "iso-ir-58", "x-gbk", "gb18030"}},
+    {"BIG5-HKSCS", {"big5", "big5-hkscs", "cn-big5", "csbig5", "x-x-big5"}},
+    {"EUC-JP", {"cseucpkdfmtjapanese", "euc-jp", "x-euc-jp"}},
+    {"ISO-2022-JP", {"csiso2022jp", "iso-2022-jp"}},
+    {"CP932",
+     {"csshiftjis", "ms932", "ms_kanji", "shift-jis", "shift_jis", "sjis", "windows-31j",
+      "x-sjis"}},
+    {"CP949",
+     {"cseuckr", "csksc56011987", "euc-kr", "iso-ir-149", "korean", "ks_c_5601-1987",
+      "ks_c_5601-1989", "ksc5601", "ksc_5601", "windows-949"}},
+};
+
+// The decoder of `label` (ASCII case aside), or null when the standard has none.
+const char* decoder_for(std::string_view label) {
+    std::string lower(label);
+    std::transform(lower.begin(), lower.end(), lower.begin(),
                    [](unsigned char c) { return char(c >= 'A' && c <= 'Z' ? c + 32 : c); });
-    const auto in = [&](std::initializer_list<std::string_view> labels) {
-        return std::find(labels.begin(), labels.end(), label) != labels.end();
-    };
-    // A UTF-16 label on a text that is not UTF-16 (no zero bytes, checked
-    // first): read as UTF-8, as the standard's decoding does.
-    if (in({"utf-8", "utf8", "unicode-1-1-utf-8", "utf-16", "utf-16le", "utf-16be"})) return "";
-    if (in({"iso-8859-1", "iso8859-1", "iso_8859-1", "iso_8859-1:1987", "iso88591", "latin1", "l1",
-            "us-ascii", "ascii", "ansi_x3.4-1968", "cp1252", "windows-1252", "x-cp1252", "cp819",
-            "ibm819", "iso-ir-100", "csisolatin1"}))
-        return "WINDOWS-1252";
-    if (in({"shift_jis", "sjis", "ms_kanji", "ms932", "windows-31j", "x-sjis", "csshiftjis"}))
-        return "CP932";
-    if (in({"gb2312", "gbk", "chinese", "csgb2312", "x-gbk", "gb_2312", "gb_2312-80", "iso-ir-58",
-            "csiso58gb231280"}))
-        return "GBK";
-    if (in({"big5", "big5-hkscs", "cn-big5", "csbig5", "x-x-big5"})) return "BIG5-HKSCS";
-    if (in({"euc-kr", "korean", "ks_c_5601-1987", "ks_c_5601-1989", "ksc5601", "ksc_5601",
-            "windows-949", "csksc56011987", "iso-ir-149"}))
-        return "CP949";
-    return label;
+    for (const Decoder& d : kDecoders)
+        if (std::find(d.labels.begin(), d.labels.end(), lower) != d.labels.end()) return d.name;
+    return nullptr;
 }
 
 // The encoding of a text in UTF-16 or UTF-32 (XML 1.0, appendix F: a byte
@@ -82,8 +150,10 @@ const char* wide_encoding(std::string_view t, std::size_t& skip) {
     skip = 0;
     if (starts({0x00, 0x00, 0x00, 0x3C})) return "UTF-32BE";
     if (starts({0x3C, 0x00, 0x00, 0x00})) return "UTF-32LE";
-    if (starts({0x00, 0x3C, 0x00, 0x3F})) return "UTF-16BE";
-    if (starts({0x3C, 0x00, 0x3F, 0x00})) return "UTF-16LE";
+    // '<' and any other character, as pugixml finds them (a document may
+    // start <svg or <!DOCTYPE).
+    if (t.size() >= 4 && starts({0x00, 0x3C}) && t[2] == 0 && t[3] != 0) return "UTF-16BE";
+    if (t.size() >= 4 && starts({0x3C, 0x00}) && t[2] != 0 && t[3] == 0) return "UTF-16LE";
     return "";
 }
 
@@ -134,17 +204,20 @@ DecodedDocument decode_document(std::string_view doc, std::size_t max_bytes) {
         const Span at = declared_label(doc);
         if (at.pos == std::string_view::npos) return d; // UTF-8 (XML 1.0, 4.3.3)
         label = std::string(doc.substr(at.pos, at.len));
-        from = decoder_for(label);
         // Bytes below 0x80 and no ISO 2022 escape: the same in every
         // ASCII-compatible encoding.
         const bool plain = std::none_of(doc.begin(), doc.end(), [](char c) {
             return static_cast<unsigned char>(c) >= 0x80 || c == 0x1B;
         });
-        if (from.empty() || plain) return d;
+        const char* decoder = decoder_for(label);
+        if (!decoder && !plain)
+            d.warning = "encoding '" + label + "' is not known: the text is read as UTF-8";
+        if (!decoder || !*decoder || plain) return d;
+        from = decoder;
     }
     const iconv_t cd = iconv_open("UTF-8", from.c_str());
-    if (cd == iconv_t(-1)) {
-        d.warning = "encoding '" + label + "' is not known: the text is read as UTF-8";
+    if (cd == iconv_t(-1)) { // a C library without the converter
+        d.warning = "encoding '" + label + "' cannot be decoded here: the text is read as UTF-8";
         return d;
     }
     const bool ok = decode(cd, doc.substr(skip), from, max_bytes, d.text);

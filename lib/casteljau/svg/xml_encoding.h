@@ -9,17 +9,19 @@
 // - A byte order mark, or UTF-16 or UTF-32 without one (the first character
 //   '<' in two or four bytes), gives the encoding, as appendix F says.
 // - Otherwise the XML declaration's encoding, its label mapped as browsers
-//   map it (the WHATWG Encoding Standard: ISO-8859-1 and US-ASCII are read
-//   as windows-1252, Shift_JIS as windows-31j, GB2312 as GBK, EUC-KR as
-//   windows-949), where it is not UTF-8. A document with no byte above 0x7F
-//   reads the same in any of these and is left as it is.
+//   map it (the WHATWG Encoding Standard's labels: ISO-8859-1 and US-ASCII
+//   are read as windows-1252, Shift_JIS as windows-31j, GB2312 as GBK, that
+//   is GB18030, EUC-KR as windows-949, UTF-16 on a text that is not as
+//   UTF-8), where it is not UTF-8. A document with no byte above 0x7F reads
+//   the same in any of these and is left as it is.
 // - A byte sequence the encoding does not have becomes U+FFFD, as browsers
 //   decode it (windows-1252's five unassigned bytes, the C1 controls they
 //   are in the Encoding Standard).
 // - The declaration of the text decoded says UTF-8, so that pugixml reads
 //   it so; its lines keep their numbers (a warning's line is the file's).
-// An encoding iconv does not know is a warning, and the text is read as
-// UTF-8, as it was before.
+// A label the standard does not have is a warning, and the text is read as
+// UTF-8, as it was before: the file does not choose among the C library's
+// converters.
 #pragma once
 
 #include <cstddef>
