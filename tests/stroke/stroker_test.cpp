@@ -376,6 +376,25 @@ TEST(Stroker, DashesOnAChordFarLongerThanTheBoxFollowTheBox) {
     EXPECT_LT(out.size(), 40u) << points << " points";
 }
 
+// Past kMaxDashes (2^20) dash boundaries the path is stroked solid, as
+// Skia strokes a pattern of more than a million dashes (the review's "0
+// 1e-6" on a line 120 long: a million dots, 700 MB, and the rest undrawn).
+// A pattern within the limit is dashed.
+TEST(Stroker, APatternOfMoreThanAMillionDashesIsStrokedSolid) {
+    StrokeGeometry s = style(10, LineCap::Round);
+    s.dashes = {0, 1e-6};
+    std::vector<Polygon> fine, plain;
+    stroke_outline(parse("M0 0 H120"), s, 0.01, fine);
+    stroke_outline(parse("M0 0 H120"), style(10, LineCap::Round), 0.01, plain);
+    ASSERT_EQ(fine.size(), 1u);
+    EXPECT_EQ(fine, plain);
+    s.dashes = {0, 1e-2}; // 12,000 dots
+    fine.clear();
+    stroke_outline(parse("M0 0 H120"), s, 0.01, fine);
+    EXPECT_GE(fine.size(), 12000u) << "a dot every 0.01, as the sum of gaps rounds";
+    EXPECT_LE(fine.size(), 12001u);
+}
+
 // Solid strokes of geometry reaching 1e308 (found by fuzz_svg_render: the
 // stroke of an arc of radius 5e307 sampled the whole arc): only the part near
 // the visible box is built, and a nearly horizontal line from -1e300 to 1e300

@@ -12,7 +12,10 @@ namespace casteljau::stroke_detail {
 
 namespace {
 
-// Dash boundaries walked per path (stroker.h): beyond, dashes are not drawn.
+// Dash boundaries walked per path (stroker.h): beyond, the path is stroked
+// solid, as Skia (Chrome, Firefox) strokes a dash pattern of more than a
+// million dashes; a pattern so fine is a solid line to the eye, and its
+// dots' outlines took 700 MB ("0 1e-6" on a line 120 px long).
 constexpr std::size_t kMaxDashes = 1 << 20;
 
 // A position in the dash pattern: entry k (even: a dash, odd: a gap) with
@@ -82,6 +85,11 @@ void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
         return;
     }
     std::size_t walked = 0;
+    const std::size_t runs_before = out.runs.size(), segments_before = out.segments.size();
+    const auto solid = [&] {
+        out.runs.resize(runs_before), out.segments.resize(segments_before), out.open = false;
+        visible_part(path, keep, out, growth);
+    };
     std::vector<FlatVertex>& v = buffers.vertices;
     for (const Subpath& sp : path.subpaths()) {
         DashCursor dash(pattern, period, st.dash_offset);
@@ -157,7 +165,7 @@ void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
                 dash.remaining -= stretch - walk;
                 if (s1 < len) pass(t_at(s1), len - s1, v[i].t);
             }
-            if (walked >= kMaxDashes) return; // the rest is not drawn
+            if (walked >= kMaxDashes) return solid();
             if (dash.in_dash() && t_from < 1) emit(seg, t_from, 1.0);
         }
         if (sp.closed && open && from_start) out.rejoin(first); // a dash through the start

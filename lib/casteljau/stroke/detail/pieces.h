@@ -123,8 +123,8 @@ struct DashBuffers {
 };
 
 // Splits the path into dashes (open subpaths) along its arc length, into
-// `out`; dashes that lie outside `keep` are not emitted. At most kMaxDashes
-// (stroker.h) dash boundaries are walked; the rest is not drawn.
+// `out`; dashes that lie outside `keep` are not emitted. Past kMaxDashes
+// (stroker.h) dash boundaries, the path is stroked solid instead.
 void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& keep,
             DashBuffers& buffers, Pieces& out, Growth& growth);
 
