@@ -532,6 +532,25 @@ TEST(Stroker, ZeroLengthDashesAreDotsAtBothEnds) {
     EXPECT_EQ(out.size(), 2u) << "a gap, then dashes at 5 and 20";
 }
 
+// A zero-length dash's square faces the path's way there (SVG 2: the
+// direction of the path at the dash; rsvg-convert turns it so too); a
+// subpath of no length faces +x. Before, every square was axis-aligned.
+TEST(Stroker, ASquareDotFacesThePath) {
+    StrokeGeometry s = style(10, LineCap::Square);
+    s.dashes = {0, 50};
+    std::vector<Polygon> diagonal;
+    stroke_outline(parse("M0 0 L100 100"), s, 0.01, diagonal);
+    ASSERT_EQ(diagonal.size(), 3u); // at 0, 50 and 100 along the 141 of the line
+    for (const Polygon& p : diagonal) {
+        EXPECT_NEAR(bounds_of({p}).width(), 10 * std::numbers::sqrt2, 1e-9);
+        EXPECT_NEAR(std::fabs(area(p)), 100, 1e-9);
+    }
+    std::vector<Polygon> lone;
+    stroke_outline(parse("M0 0 L0 0"), style(10, LineCap::Square), 0.01, lone);
+    ASSERT_EQ(lone.size(), 1u);
+    EXPECT_NEAR(bounds_of(lone).width(), 10, 1e-12);
+}
+
 // A dot turns as a stroke's outline turns, so that where one overlaps a
 // stroke the nonzero windings add up (the reviewer's "M20 20 H60 M60 20
 // L60 20": the dot cut a crescent out of the round cap, and a dash "40 0 0

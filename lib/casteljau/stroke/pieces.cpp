@@ -103,6 +103,11 @@ void dashed(const Path& path, const StrokeGeometry& st, double tol, const Rect& 
                 from_start = ta == 0 && &seg == &sp.segments.front();
             if (!open) out.move_to(segment_start(piece));
             out.append(piece);
+            if (ta == tb) { // a zero-length dash: its caps face the path's way there
+                const Vec2 d = tb < 1 ? segment_start_tangent(segment_subsegment(seg, ta, 1.0))
+                                      : segment_end_tangent(seg);
+                if (const double len = d.length(); len > 0) out.runs.back().along = d / len;
+            }
             growth.reached(out.segments.size());
             open = true;
         };

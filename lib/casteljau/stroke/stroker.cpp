@@ -350,18 +350,20 @@ class Outline {
         }
     }
 
-    // Both turn as an open subpath's outline turns (its caps sweep -pi), so
-    // that where a dot overlaps a stroke the windings add up, not cancel
-    // (a dot at a dash's end cut a hole in its cap).
-    void zero_length(Point p) const {
+    // A zero-length subpath's caps: a disc, or a square facing `along` (a
+    // unit vector, pieces.h's Run::along). Both turn as an open subpath's
+    // outline turns (its caps sweep -pi), so that where a dot overlaps a
+    // stroke the windings add up, not cancel (a dot at a dash's end cut a
+    // hole in its cap).
+    void zero_length(Point p, Vec2 along) const {
         if (st_.cap == LineCap::Round) {
             Polygon& disc = b_.polygons[b_.new_polygon()];
             disc.push_back(p + Vec2{h_, 0});
             arc(disc, p, {1, 0}, -2 * kPi);
         } else if (st_.cap == LineCap::Square) {
             Polygon& square = b_.polygons[b_.new_polygon()];
-            for (const Vec2 v : {Vec2{-h_, -h_}, Vec2{-h_, h_}, Vec2{h_, h_}, Vec2{h_, -h_}})
-                square.push_back(p + v);
+            const Vec2 d = along * h_, n = along.perp() * h_;
+            for (const Vec2 v : {-d - n, -d + n, d + n, d - n}) square.push_back(p + v);
         }
     }
 
@@ -369,13 +371,14 @@ class Outline {
     // it is dropped (a part of it would be a wrong shape) and false returned.
     // Counted per segment: one adds its samples, which are not made past
     // what could fit, and a few joins.
-    bool subpath(Point start, std::span<const Segment> segments, bool closed, std::size_t budget) {
+    bool subpath(Point start, std::span<const Segment> segments, bool closed, Vec2 along,
+                 std::size_t budget) {
         std::vector<const Segment*>& segs = b_.segs;
         segs.clear();
         for (const Segment& s : segments)
             if (!degenerate(s)) segs.push_back(&s);
         if (segs.empty()) {
-            zero_length(start);
+            zero_length(start, along);
             return true;
         }
         // Both sides' polygons are taken before either is referenced: taking
@@ -511,7 +514,7 @@ std::span<const Polygon> Stroker::outline(const Path& path, const StrokeGeometry
         if (run.begin == run.end) continue; // a lone move_to draws nothing
         const std::size_t before = b.count;
         if (points >= kMaxOutlinePoints ||
-            !outline.subpath(run.start, b.pieces.segments_of(run), run.closed,
+            !outline.subpath(run.start, b.pieces.segments_of(run), run.closed, run.along,
                              kMaxOutlinePoints - points)) {
             // The hundreds of megabytes it took are not kept for the next
             // stroke (a batch's next files, a fuzzer's next inputs).

@@ -62,6 +62,10 @@ struct Pieces {
         Point start;
         std::size_t begin, end; // segments[begin, end)
         bool closed;
+        // Where the run has no length: the way its square cap faces (SVG 2,
+        // 13.5: the path's direction at a zero-length dash; +x for a
+        // subpath of no length).
+        Vec2 along{1, 0};
     };
     std::vector<Segment> segments;
     std::vector<Run> runs;
@@ -69,7 +73,7 @@ struct Pieces {
 
     void clear() { segments.clear(), runs.clear(), open = false; }
     void move_to(Point p) {
-        runs.push_back({p, segments.size(), segments.size(), false});
+        runs.push_back({p, segments.size(), segments.size(), false, {1, 0}});
         open = true;
     }
     void append(const Segment& s) {
