@@ -41,6 +41,9 @@ TEST(XmlEncoding, LabelsAreTheEncodingStandards) {
     EXPECT_EQ(d.text, declared("UTF-8", "\u201C\u00E9\u201D\u0081"));
     const DecodedDocument gb = decode_document(declared("gb2312", "\xD6\xD0"), kLimit);
     EXPECT_EQ(gb.text, declared("UTF-8", "中")) << "GB2312 is read as GBK";
+    // GBK's 0x80 is the euro (the standard's decoder; glibc's GB18030 lacks it).
+    EXPECT_EQ(decode_document(declared("GBK", "\x80\xD6\xD0"), kLimit).text,
+              declared("UTF-8", "€中"));
 }
 
 // Only the standard's labels choose a decoder: UTF-16's on a text that is

@@ -163,7 +163,7 @@ bool decode(iconv_t cd, std::string_view in, const std::string& from, std::size_
     // A byte sequence the encoding lacks is passed over a code unit at a
     // time: a byte, or UTF-16's and UTF-32's units.
     const std::size_t unit = from.starts_with("UTF-32") ? 4 : from.starts_with("UTF-16") ? 2 : 1;
-    const bool windows_1252 = from == "WINDOWS-1252";
+    const bool windows_1252 = from == "WINDOWS-1252", gb18030 = from == "GB18030";
     out.resize(std::min(max_bytes, in.size() + in.size() / 2 + 16));
     char* src = const_cast<char*>(in.data()); // iconv's signature; it does not write there
     std::size_t src_left = in.size(), done = 0;
@@ -183,6 +183,8 @@ bool decode(iconv_t cd, std::string_view in, const std::string& from, std::size_
         const unsigned char byte = static_cast<unsigned char>(*src);
         if (windows_1252) { // the C1 control of the same number (Encoding Standard, index)
             out[done++] = char(0xC2), out[done++] = char(byte);
+        } else if (gb18030 && byte == 0x80) { // the standard's GBK decoder: U+20AC, the euro
+            for (const unsigned char b : {0xE2, 0x82, 0xAC}) out[done++] = char(b);
         } else {
             for (const unsigned char b : {0xEF, 0xBF, 0xBD}) out[done++] = char(b);
         }
