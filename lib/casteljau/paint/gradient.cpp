@@ -50,10 +50,8 @@ Rgba lerp(Rgba a, Rgba b, float t) {
 inline double cone_parameter(const GradientShader::RadialForm& r, Vec2 d) {
     // In units of the circles' size (t does not change), so that no square
     // overflows where the circles reach 1e300.
-    const Vec2 to_end = r.center - r.focal;
-    const double k = 1 / std::max({std::fabs(to_end.x), std::fabs(to_end.y), std::fabs(r.r0),
-                                   std::fabs(r.r0 + r.dr)});
-    const Vec2 e = to_end * k;
+    const double k = r.unit;
+    const Vec2 e = (r.center - r.focal) * k;
     d = d * k;
     const double r0 = r.r0 * k, dr = r.dr * k;
     const double a = e.length_sq() - dr * dr, b = d.dot(e) + r0 * dr;
@@ -98,9 +96,14 @@ GradientShader::RadialForm GradientShader::radial_form(const Gradient& g) {
     // A cone (top of the file) where the start circle is not inside the end
     // circle by more than rounding: a focal point on the circle, as 0.4 - 0.1
     // and 0.7 - 0.4 put it, is one either side (the linear case).
+    // (A zero radius paints the last stop, as the nested form does.)
     const double fr = std::max(g.focal_radius, 0.0);
-    if ((g.center - g.focal).length() >= std::fabs(g.radius - fr) * (1 - 1e-12))
-        return RadialForm{g.focal, g.center, fr, g.radius - fr, 0, 1, true};
+    const Vec2 to_end = g.center - g.focal;
+    if (g.radius > 0 && to_end.length() >= std::fabs(g.radius - fr) * (1 - 1e-12)) {
+        const double size =
+            std::max({std::fabs(to_end.x), std::fabs(to_end.y), fr, std::fabs(g.radius)});
+        return RadialForm{g.focal, g.center, fr, g.radius - fr, 0, 1, true, 1 / size};
+    }
     // A start circle larger than the end circle is the same family of
     // circles run the other way (SVG 2, 14.3.4's larger t over smaller t,
     // with one circle holding the other): swapped, and t read as 1 - t.
@@ -401,7 +404,7 @@ void GradientShader::shade_cone(int x, int y, int n, const P* lut, P* out) const
 template <Spread S, class P>
 void GradientShader::shade_spread(int x, int y, int n, const P* lut, P* out) const {
     if (g_->kind == Gradient::Kind::Linear) return shade_linear<S>(x, y, n, lut, out);
-    if (radial_.cone && g_->radius > 0) return shade_cone<S>(x, y, n, lut, out);
+    if (radial_.cone) return shade_cone<S>(x, y, n, lut, out);
     if (radial_.r0 > 0 || radial_.t1 != 1) return shade_radial<S, true>(x, y, n, lut, out);
     shade_radial<S, false>(x, y, n, lut, out);
 }

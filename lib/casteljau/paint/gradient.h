@@ -86,6 +86,7 @@ class GradientShader {
         double r0 = 0, dr = 0; ///< the start circle's radius, and r - r0
         double t0 = 0, t1 = 1; ///< (1, -1) when swapped
         bool cone = false;     ///< neither circle holds the other (top of the file)
+        double unit = 1;       ///< a cone's: 1 / the circles' size, its units' scale
     };
     /// The circles of radial gradient g as drawn.
     static RadialForm radial_form(const Gradient& g);

@@ -85,11 +85,12 @@
 // stroke of a path reaching 1e308, or a dashed path 1e9 px long, costs what its
 // visible part costs. At most kMaxDashes dash boundaries are walked; beyond,
 // the path is stroked solid (as Skia does past a million dashes), which
-// bounds a pattern far finer than a pixel. At most kMaxOutlinePoints (2^23) points are built per
-// call: a subpath that would take more is not drawn, nor any after it, which bounds the memory of
-// round joins on a stroke millions of pixels wide, and of curves sampled past what could fit (a
-// segment's samples stop there; after such a subpath the working buffers are freed rather than kept
-// for the next call).
+// bounds a pattern far finer than a pixel. At most kMaxOutlinePoints (2^23)
+// points are built per call: a subpath that would take more is not drawn,
+// nor any after it, which bounds the memory of round joins on a stroke
+// millions of pixels wide, and of curves sampled past what could fit (a
+// segment's samples stop there; after such a subpath the working buffers are
+// freed rather than kept for the next call).
 #pragma once
 
 #include "casteljau/curve/path.h"

@@ -22,9 +22,9 @@
 // reads it again), @imports kMaxStyleSheetNesting deep, and all their text
 // at most SvgOptions::max_attribute_bytes (what one <style> may hold); a
 // file that imports itself, through any others, is a problem and is
-// skipped. A UTF-16 document's xml-stylesheet links are not read (the
-// prolog is read as UTF-8 text).
+// skipped.
 #include "casteljau/io/text_file.h"
+#include "casteljau/svg/detail/pseudo_attributes.h"
 #include "casteljau/svg/detail/reader_impl.h"
 #include "casteljau/svg/media_query.h"
 #include "casteljau/svg/resource_url.h"
@@ -32,23 +32,6 @@
 #include <filesystem>
 
 namespace casteljau::svg_detail {
-
-namespace {
-
-// The pseudo-attributes of an xml-stylesheet instruction (Associating Style
-// Sheets, 3), which have the syntax of XML attributes, character and
-// predefined entity references included: read as an element's by pugixml.
-// Malformed, none.
-std::map<std::string, std::string> pseudo_attributes(std::string_view s) {
-    std::map<std::string, std::string> out;
-    pugi::xml_document d;
-    if (!d.load_string(("<x " + std::string(s) + "/>").c_str())) return out;
-    for (const pugi::xml_attribute& a : d.first_child().attributes())
-        out.emplace(a.name(), a.value());
-    return out;
-}
-
-} // namespace
 
 void Reader::linked_style_sheets(const pugi::xml_node& root) {
     // The prolog is the text before the root's start tag; read again as a

@@ -100,8 +100,7 @@ std::optional<double> Reader::length(const pugi::xml_node& n, const char* attr, 
 // elements needs (read(), and a document a <use> draws from, external_use.cpp).
 pugi::xml_node Reader::load() {
     // Decoded to UTF-8 first (svg/xml_encoding.h): at most 3 bytes a byte.
-    DecodedDocument decoded = decode_document(text_, 3 * text_.size() + 16);
-    if (!decoded.error.empty()) fail_at(0, decoded.error);
+    DecodedDocument decoded = decode_document(text_);
     if (!decoded.warning.empty()) problem_at({name_, 1, "?xml", decoded.warning});
     if (decoded.changed) {
         decoded_ = std::move(decoded.text);

@@ -1,6 +1,7 @@
 #include "casteljau/svg/xml_encoding.h"
 
 #include "casteljau/svg/detail/ascii.h"
+#include "casteljau/svg/detail/pseudo_attributes.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -11,34 +12,22 @@ namespace casteljau {
 
 namespace {
 
-// Where the XML declaration's encoding label stands in `text`, or npos: the
-// declaration is the text's very start, its pseudo-attributes in order,
-// version, encoding, standalone (XML 1.0, 2.8 and 4.3.3), all ASCII.
-struct Span {
-    std::size_t pos = std::string_view::npos, len = 0;
-};
-Span declared_label(std::string_view text) {
-    using svg_detail::is_xml_space;
-    if (!text.starts_with("<?xml") || text.size() < 6 || !is_xml_space(text[5])) return {};
-    std::size_t k = 5;
-    while (true) {
-        const std::size_t before = k;
-        while (k < text.size() && is_xml_space(text[k])) ++k;
-        const std::size_t name = k;
-        while (k < text.size() && ((text[k] | 0x20) >= 'a' && (text[k] | 0x20) <= 'z')) ++k;
-        if (k == name || k == before) return {}; // "?>", or no space before a name
-        const std::string_view attr = text.substr(name, k - name);
-        while (k < text.size() && is_xml_space(text[k])) ++k;
-        if (k >= text.size() || text[k] != '=') return {};
-        ++k;
-        while (k < text.size() && is_xml_space(text[k])) ++k;
-        if (k >= text.size() || (text[k] != '"' && text[k] != '\'')) return {};
-        const std::size_t end = text.find(text[k], k + 1);
-        if (end == std::string_view::npos || text.substr(k, end - k).find('>') != text.npos)
-            return {};
-        if (attr == "encoding") return {k + 1, end - k - 1};
-        k = end + 1;
-    }
+// Where the XML declaration ends (after its "?>"), or 0 when the text has
+// none: it is the text's very start (XML 1.0, 2.8).
+std::size_t declaration_end(std::string_view text) {
+    if (!text.starts_with("<?xml") || text.size() < 6 || !svg_detail::is_xml_space(text[5]))
+        return 0;
+    const std::size_t close = text.find("?>");
+    return close == std::string_view::npos ? 0 : close + 2;
+}
+
+// The declaration's encoding label (4.3.3), "" when it has none.
+std::string declared_label(std::string_view text) {
+    const std::size_t end = declaration_end(text);
+    if (end == 0) return {};
+    const auto a = svg_detail::pseudo_attributes(text.substr(5, end - 7));
+    const auto it = a.find("encoding");
+    return it == a.end() ? std::string() : it->second;
 }
 
 // The Encoding Standard's labels (WHATWG, 4.2) and the decoder each names,
@@ -157,14 +146,15 @@ const char* wide_encoding(std::string_view t, std::size_t& skip) {
     return "";
 }
 
-// `in` decoded from `from` into `out`, up to max_bytes (false beyond).
-bool decode(iconv_t cd, std::string_view in, const std::string& from, std::size_t max_bytes,
-            std::string& out) {
+// `in` decoded from `from` into `out`. It grows to at most 3 bytes an input
+// byte: a U+FFFD for a byte, or a BMP character for a single-byte one; wider
+// input (two bytes and more) gives at most as many bytes in UTF-8.
+void decode(iconv_t cd, std::string_view in, const std::string& from, std::string& out) {
     // A byte sequence the encoding lacks is passed over a code unit at a
     // time: a byte, or UTF-16's and UTF-32's units.
     const std::size_t unit = from.starts_with("UTF-32") ? 4 : from.starts_with("UTF-16") ? 2 : 1;
     const bool windows_1252 = from == "WINDOWS-1252", gb18030 = from == "GB18030";
-    out.resize(std::min(max_bytes, in.size() + in.size() / 2 + 16));
+    out.resize(in.size() + in.size() / 2 + 16);
     char* src = const_cast<char*>(in.data()); // iconv's signature; it does not write there
     std::size_t src_left = in.size(), done = 0;
     while (true) {
@@ -175,11 +165,10 @@ bool decode(iconv_t cd, std::string_view in, const std::string& from, std::size_
         if (r != std::size_t(-1) && src_left == 0) break;
         // Room for the conversion to go on, or for a U+FFFD (3 bytes).
         if (errno == E2BIG || out.size() - done < 3) {
-            if (out.size() >= max_bytes) return false;
-            out.resize(std::min(max_bytes, out.size() * 2));
+            out.resize(out.size() * 2);
             continue;
         }
-        if (errno != EILSEQ && errno != EINVAL) return false;
+        // EILSEQ, or EINVAL (a sequence cut off at the end): passed over.
         const unsigned char byte = static_cast<unsigned char>(*src);
         if (windows_1252) { // the C1 control of the same number (Encoding Standard, index)
             out[done++] = char(0xC2), out[done++] = char(byte);
@@ -193,19 +182,17 @@ bool decode(iconv_t cd, std::string_view in, const std::string& from, std::size_
         if (src_left == 0) break;
     }
     out.resize(done);
-    return true;
 }
 
 } // namespace
 
-DecodedDocument decode_document(std::string_view doc, std::size_t max_bytes) {
+DecodedDocument decode_document(std::string_view doc) {
     DecodedDocument d;
     std::size_t skip = 0;
     std::string from = wide_encoding(doc, skip), label = from;
     if (from.empty()) {
-        const Span at = declared_label(doc);
-        if (at.pos == std::string_view::npos) return d; // UTF-8 (XML 1.0, 4.3.3)
-        label = std::string(doc.substr(at.pos, at.len));
+        label = declared_label(doc);
+        if (label.empty()) return d; // UTF-8 (XML 1.0, 4.3.3)
         // Bytes below 0x80 and no ISO 2022 escape: the same in every
         // ASCII-compatible encoding.
         const bool plain = std::none_of(doc.begin(), doc.end(), [](char c) {
@@ -222,16 +209,15 @@ DecodedDocument decode_document(std::string_view doc, std::size_t max_bytes) {
         d.warning = "encoding '" + label + "' cannot be decoded here: the text is read as UTF-8";
         return d;
     }
-    const bool ok = decode(cd, doc.substr(skip), from, max_bytes, d.text);
+    decode(cd, doc.substr(skip), from, d.text);
     iconv_close(cd);
-    if (!ok) {
-        d.text = std::string();
-        d.error = "the text decoded from " + label + " is over " + std::to_string(max_bytes) +
-                  " bytes (the limit)";
-        return d;
+    // The declaration says UTF-8 now, on as many lines as it took.
+    if (const std::size_t end = declaration_end(d.text)) {
+        const auto lines = std::count(d.text.begin(), d.text.begin() + std::ptrdiff_t(end), '\n');
+        d.text.replace(0, end,
+                       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>" +
+                           std::string(std::size_t(lines), '\n'));
     }
-    if (const Span at = declared_label(d.text); at.pos != std::string_view::npos)
-        d.text.replace(at.pos, at.len, "UTF-8");
     d.changed = true;
     return d;
 }

@@ -18,13 +18,13 @@
 //   decode it (windows-1252's five unassigned bytes, the C1 controls they
 //   are in the Encoding Standard).
 // - The declaration of the text decoded says UTF-8, so that pugixml reads
-//   it so; its lines keep their numbers (a warning's line is the file's).
+//   it so; it keeps its lines, so every line keeps its number (a warning's
+//   line is the file's).
 // A label the standard does not have is a warning, and the text is read as
 // UTF-8, as it was before: the file does not choose among the C library's
 // converters.
 #pragma once
 
-#include <cstddef>
 #include <string>
 #include <string_view>
 
@@ -37,11 +37,10 @@ struct DecodedDocument {
     bool changed = false;
     std::string text;    ///< the document in UTF-8, its declaration saying so
     std::string warning; ///< "" or an encoding not known (the text is read as it is)
-    std::string error;   ///< "" or the decoded text over the limit; then nothing else is set
 };
 
-/// The document `doc` decoded to UTF-8 (top of the file), into at most
-/// `max_bytes` bytes.
-DecodedDocument decode_document(std::string_view doc, std::size_t max_bytes);
+/// The document `doc` decoded to UTF-8 (top of the file): at most 3 bytes
+/// a byte of `doc`.
+DecodedDocument decode_document(std::string_view doc);
 
 } // namespace casteljau

@@ -73,7 +73,7 @@ struct Pieces {
 
     void clear() { segments.clear(), runs.clear(), open = false; }
     void move_to(Point p) {
-        runs.push_back({p, segments.size(), segments.size(), false, {1, 0}});
+        runs.push_back({p, segments.size(), segments.size(), false});
         open = true;
     }
     void append(const Segment& s) {

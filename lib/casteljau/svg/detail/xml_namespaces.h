@@ -7,11 +7,11 @@
 // namespace under another prefix take their plain (local) names, and the
 // attributes of the XLink namespace the prefix "xlink", which is what the
 // reader looks for (an attribute in the SVG namespace, svg:fill, is not
-// fill, and stays foreign). Other namespaces keep their prefixes: their elements
-// are foreign, and skipped; so are the unprefixed elements under a default
-// namespace declared other than SVG's (xmlns="urn:x"), which take a prefix. Declarations are scoped
-// as the specification says (a declaration holds for its element and what it holds, an inner one
-// hiding an outer one).
+// fill, and stays foreign). Other namespaces keep their prefixes: their
+// elements are foreign, and skipped; so are the unprefixed elements under a
+// default namespace declared other than SVG's (xmlns="urn:x"), which take a
+// prefix. Declarations are scoped as the specification says (a declaration
+// holds for its element and what it holds, an inner one hiding an outer one).
 #pragma once
 
 #include <cstddef>
